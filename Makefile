@@ -1,0 +1,104 @@
+# wetgran — build, test, benchmark and regenerate the figures.
+#   make            build every tool into bin/
+#   make demo       the main job: a small real figure (thesis Fig. 3.2, event-driven)
+#   make test       build and run the tests (SANITIZE=1: under ASan + UBSan)
+#   make bench      benchmarks (numbers go to tests/bench/out/)
+# Both demo and test first install the Debian packages they need (scripts/install-deps.sh).
+
+SHELL := /bin/bash
+CC ?= gcc
+OPT ?= -O2 -g
+HDF5_CFLAGS := $(shell pkg-config --cflags hdf5-serial 2>/dev/null)
+HDF5_LIBS := $(shell pkg-config --libs hdf5-serial 2>/dev/null)
+GIT_VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+WARN := -Wall -Wextra
+# -ffp-contract=off: no FMA contraction, so results are bit-identical across builds
+BASE_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -ffp-contract=off
+
+ifeq ($(SANITIZE),1)
+  BUILD := build/san
+  BASE_CFLAGS += -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined
+  LDSAN := -fsanitize=address,undefined
+  BIN := build/san/bin
+else
+  BUILD := build/rel
+  BIN := bin
+endif
+
+ALL_CFLAGS := $(BASE_CFLAGS) -Isim $(HDF5_CFLAGS) -DWG_CFLAGS='"$(BASE_CFLAGS)"'
+LIBS := $(HDF5_LIBS) -lgsl -lgslcblas -lm $(LDSAN)
+
+LIB_SRC := $(filter-out sim/run_main.c,$(wildcard sim/*.c))
+LIB_OBJ := $(patsubst sim/%.c,$(BUILD)/sim/%.o,$(LIB_SRC))
+LIB := $(BUILD)/libwetgran.a
+ANALYSIS_SRC := $(wildcard analysis/*.c)
+TOOLS := $(BIN)/wetgran-run $(patsubst analysis/%.c,$(BIN)/wetgran-%,$(ANALYSIS_SRC))
+TEST_SRC := $(wildcard tests/test_*.c)
+TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
+BENCH_SRC := $(wildcard tests/bench/bench_*.c)
+BENCH_BIN := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
+
+.PHONY: all deps demo test bench clean tools tests-build
+.DELETE_ON_ERROR:
+
+all: tools
+
+deps:
+	@./scripts/install-deps.sh
+
+tools: $(TOOLS)
+
+$(BUILD)/sim/%.o: sim/%.c $(wildcard sim/*.h) | $(BUILD)/sim
+	$(CC) $(ALL_CFLAGS) -c $< -o $@
+
+# the version string alone is rebuilt when the git state changes
+$(BUILD)/sim/wg_error.o: sim/wg_error.c sim/wg.h $(BUILD)/version.txt | $(BUILD)/sim
+	$(CC) $(ALL_CFLAGS) -DWG_GIT_VERSION='"$(GIT_VERSION)"' -c $< -o $@
+
+$(BUILD)/version.txt: FORCE | $(BUILD)/sim
+	@echo '$(GIT_VERSION)' | cmp -s - $@ || echo '$(GIT_VERSION)' > $@
+FORCE:
+
+$(LIB): $(LIB_OBJ)
+	ar rcs $@.tmp $^ && mv $@.tmp $@
+
+$(BIN)/wetgran-run: $(BUILD)/sim/run_main.o $(LIB) | $(BIN)
+	$(CC) $(ALL_CFLAGS) $^ $(LIBS) -o $@
+
+$(BIN)/wetgran-%: analysis/%.c $(LIB) | $(BIN)
+	$(CC) $(ALL_CFLAGS) $< $(LIB) $(LIBS) -o $@
+
+$(BUILD)/tests/%: tests/%.c tests/tharness.h $(LIB) | $(BUILD)/tests
+	$(CC) $(ALL_CFLAGS) -Itests $< $(LIB) $(LIBS) -o $@
+
+$(BUILD)/bench/%: tests/bench/%.c $(LIB) | $(BUILD)/bench
+	$(CC) $(ALL_CFLAGS) -Itests $< $(LIB) $(LIBS) -o $@
+
+$(BUILD)/sim $(BUILD)/tests $(BUILD)/bench $(BIN):
+	mkdir -p $@
+
+tests-build: $(TOOLS) $(TEST_BIN)
+
+# The test command of the README (and of .ci/run).
+test: deps
+	$(MAKE) tests-build
+	./tests/run.sh $(BUILD)/tests $(BIN)
+
+bench: deps
+	$(MAKE) tools $(BENCH_BIN)
+	./tests/bench/run.sh $(BUILD)/bench $(BIN)
+
+# Figures: make fig3_2 [PROFILE=quick|full]; each is experiments/<id>/.
+PROFILE ?= quick
+FIGURES := $(notdir $(wildcard experiments/fig*))
+.PHONY: $(FIGURES) figures
+$(FIGURES): deps
+	$(MAKE) tools
+	$(MAKE) -C experiments/$@ PROFILE=$(PROFILE)
+figures: $(FIGURES)
+
+# The main job: thesis Fig. 3.2 (event-driven curves) at CI scale.
+demo: fig3_2
+
+clean:
+	rm -rf build bin

@@ -1,0 +1,14 @@
+#!/bin/sh
+# Installs the Debian packages wetgran needs, if any is missing.  Run as root (or with sudo).
+set -e
+PKGS="build-essential pkg-config libhdf5-dev hdf5-tools libgsl-dev gnuplot-nox libqhull-dev"
+missing=""
+for p in $PKGS; do
+  dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
+done
+[ -z "$missing" ] && exit 0
+echo "wetgran: installing Debian packages:$missing" >&2
+SUDO=""
+[ "$(id -u)" = 0 ] || SUDO="sudo"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq $missing >/dev/null

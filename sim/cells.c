@@ -1,0 +1,205 @@
+#include "cells.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+int wg_cells_alloc(wg_cells *c, int dim, const double *lo, const double *len,
+                   const int *periodic, double range, long n)
+{
+  c->dim = dim;
+  c->ncell = 1;
+  for (int a = 0; a < 3; a++) {
+    if (a >= dim) {
+      c->nc[a] = 1; c->lo[a] = 0; c->len[a] = 1; c->w[a] = 1; c->periodic[a] = 0;
+      continue;
+    }
+    c->lo[a] = lo[a];
+    c->len[a] = len[a];
+    c->periodic[a] = periodic[a];
+    long k = (long)floor(len[a] / range);
+    if (k < 1) k = 1;
+    if (k > 4096) k = 4096;
+    if (periodic[a] && k < 3)
+      return wg_error(WG_EINVAL, "cells",
+                      "periodic box length %g along axis %d is below 3 interaction ranges (%g)",
+                      len[a], a, 3 * range);
+    c->nc[a] = (int)k;
+    c->w[a] = len[a] / (double)k;
+    c->ncell *= k;
+  }
+  c->head = malloc(sizeof *c->head * (size_t)c->ncell);
+  c->next = malloc(sizeof *c->next * (size_t)n);
+  c->prev = malloc(sizeof *c->prev * (size_t)n);
+  c->cell = malloc(sizeof *c->cell * (size_t)n);
+  if (!c->head || !c->next || !c->prev || !c->cell) {
+    wg_cells_free(c);
+    return wg_error(WG_ENOMEM, "cells", "cannot allocate %ld cells for %ld particles", c->ncell, n);
+  }
+  for (long k = 0; k < c->ncell; k++) c->head[k] = -1;
+  return WG_OK;
+}
+
+void wg_cells_free(wg_cells *c)
+{
+  free(c->head); free(c->next); free(c->prev); free(c->cell);
+  c->head = c->next = c->prev = c->cell = NULL;
+}
+
+static inline long flat(const wg_cells *c, const int *ix)
+{
+  return ix[0] + (long)c->nc[0] * (ix[1] + (long)c->nc[1] * ix[2]);
+}
+
+static inline void unflat(const wg_cells *c, long cell, int *ix)
+{
+  ix[0] = (int)(cell % c->nc[0]);
+  cell /= c->nc[0];
+  ix[1] = (int)(cell % c->nc[1]);
+  ix[2] = (int)(cell / c->nc[1]);
+}
+
+long wg_cells_locate(const wg_cells *c, const double *r)
+{
+  int ix[3] = {0, 0, 0};
+  for (int a = 0; a < c->dim; a++) {
+    long k = (long)floor((r[a] - c->lo[a]) / c->w[a]);
+    if (c->periodic[a]) {
+      k %= c->nc[a];
+      if (k < 0) k += c->nc[a];
+    } else {
+      if (k < 0) k = 0;
+      if (k >= c->nc[a]) k = c->nc[a] - 1;
+    }
+    ix[a] = (int)k;
+  }
+  return flat(c, ix);
+}
+
+void wg_cells_insert(wg_cells *c, long i, long cell)
+{
+  c->cell[i] = (int32_t)cell;
+  c->prev[i] = -1;
+  c->next[i] = c->head[cell];
+  if (c->head[cell] >= 0) c->prev[c->head[cell]] = (int32_t)i;
+  c->head[cell] = (int32_t)i;
+}
+
+void wg_cells_remove(wg_cells *c, long i)
+{
+  if (c->prev[i] >= 0) c->next[c->prev[i]] = c->next[i];
+  else c->head[c->cell[i]] = c->next[i];
+  if (c->next[i] >= 0) c->prev[c->next[i]] = c->prev[i];
+}
+
+void wg_cells_rebuild(wg_cells *c, long n, const double *r, size_t stride)
+{
+  for (long k = 0; k < c->ncell; k++) c->head[k] = -1;
+  /* inserting in reverse keeps each cell's list in increasing particle order */
+  for (long i = n - 1; i >= 0; i--)
+    wg_cells_insert(c, i, wg_cells_locate(c, r + (size_t)i * stride));
+}
+
+long wg_cells_step(const wg_cells *c, long cell, int axis, int dir, int *wrapped)
+{
+  int ix[3];
+  unflat(c, cell, ix);
+  ix[axis] += dir;
+  *wrapped = 0;
+  if (ix[axis] < 0 || ix[axis] >= c->nc[axis]) {
+    if (!c->periodic[axis]) return -1;
+    *wrapped = dir;
+    ix[axis] = ix[axis] < 0 ? c->nc[axis] - 1 : 0;
+  }
+  return flat(c, ix);
+}
+
+/* Cells at offsets lo_off..hi_off per axis around ix, without duplicates. */
+static int block(const wg_cells *c, const int *ix, const int *lo_off, const int *hi_off, long *out)
+{
+  int m = 0;
+  for (int dz = lo_off[2]; dz <= hi_off[2]; dz++)
+    for (int dy = lo_off[1]; dy <= hi_off[1]; dy++)
+      for (int dx = lo_off[0]; dx <= hi_off[0]; dx++) {
+        int jx[3] = {ix[0] + dx, ix[1] + dy, ix[2] + dz};
+        int ok = 1;
+        for (int a = 0; a < 3 && ok; a++) {
+          if (jx[a] >= 0 && jx[a] < c->nc[a]) continue;
+          if (!c->periodic[a]) ok = 0;
+          else jx[a] = (jx[a] + c->nc[a]) % c->nc[a];
+        }
+        if (ok) out[m++] = flat(c, jx);
+      }
+  return m;
+}
+
+int wg_cells_stencil(const wg_cells *c, long cell, long *out)
+{
+  int ix[3], lo_off[3], hi_off[3];
+  unflat(c, cell, ix);
+  for (int a = 0; a < 3; a++) {
+    lo_off[a] = a < c->dim ? -1 : 0;
+    hi_off[a] = a < c->dim ? 1 : 0;
+  }
+  return block(c, ix, lo_off, hi_off, out);
+}
+
+int wg_cells_face(const wg_cells *c, long cell, int axis, int dir, long *out)
+{
+  int ix[3], lo_off[3], hi_off[3];
+  unflat(c, cell, ix);
+  for (int a = 0; a < 3; a++) {
+    lo_off[a] = a < c->dim ? -1 : 0;
+    hi_off[a] = a < c->dim ? 1 : 0;
+  }
+  lo_off[axis] = hi_off[axis] = dir;
+  return block(c, ix, lo_off, hi_off, out);
+}
+
+/* Crossing times of a height zb by z(tau) = z0 + v tau - g tau^2 / 2 (g > 0), counted only
+   from tau_now on.  Upwards: the earlier root, if not yet passed.  Downwards: the later root. */
+static double rise_to(double dz, double v, double g, double tau_now)
+{
+  double disc = v * v - 2 * g * dz; /* dz = zb - z0 > 0 */
+  if (v <= 0 || disc < 0) return INFINITY;
+  double tau = 2 * dz / (v + sqrt(disc));
+  return tau >= tau_now ? tau : INFINITY;
+}
+
+static double fall_to(double dz, double v, double g, double tau_now)
+{
+  double disc = v * v - 2 * g * dz; /* dz = zb - z0 <= 0 */
+  if (disc < 0) disc = 0;
+  double tau = (v + sqrt(disc)) / g;
+  return tau > tau_now ? tau : tau_now;
+}
+
+double wg_cells_exit_time(const wg_cells *c, long cell, const double *r, const double *v,
+                          double g, double tau_now, int skip_axis, int skip_dir, int *axis,
+                          int *dir)
+{
+  int ix[3];
+  unflat(c, cell, ix);
+  double best = INFINITY;
+  *axis = 0;
+  *dir = 0;
+  for (int a = 0; a < c->dim; a++) {
+    double lower = c->lo[a] + ix[a] * c->w[a];
+    double upper = lower + c->w[a];
+    int has_lower = (c->periodic[a] || ix[a] > 0) && !(a == skip_axis && skip_dir == -1);
+    int has_upper = (c->periodic[a] || ix[a] < c->nc[a] - 1) && !(a == skip_axis && skip_dir == 1);
+    double t_up = INFINITY, t_down = INFINITY;
+    if (a == c->dim - 1 && g > 0) {
+      if (has_upper) t_up = rise_to(upper - r[a], v[a], g, tau_now);
+      if (has_lower) t_down = fall_to(lower - r[a], v[a], g, tau_now);
+    } else if (v[a] > 0 && has_upper) {
+      t_up = (upper - r[a]) / v[a];
+      if (t_up < tau_now) t_up = tau_now;
+    } else if (v[a] < 0 && has_lower) {
+      t_down = (lower - r[a]) / v[a];
+      if (t_down < tau_now) t_down = tau_now;
+    }
+    if (t_up < best) { best = t_up; *axis = a; *dir = 1; }
+    if (t_down < best) { best = t_down; *axis = a; *dir = -1; }
+  }
+  return best;
+}

@@ -1,0 +1,54 @@
+/* Cell grid for neighbour search: cells at least one interaction range wide, particles in
+   doubly linked lists per cell.  Axis dim-1 is the vertical; it is periodic only in a
+   periodic container, otherwise its outermost cells extend to the walls' reach. */
+#ifndef WG_CELLS_H
+#define WG_CELLS_H
+
+#include "wg.h"
+
+typedef struct wg_cells {
+  int dim;
+  int nc[3];          /* cells per axis */
+  double lo[3];       /* lower edge of the grid [d] */
+  double len[3];      /* extent of the grid along each axis [d] */
+  double w[3];        /* cell width per axis, >= the interaction range [d] */
+  int periodic[3];
+  long ncell;
+  int32_t *head;      /* first particle of each cell, -1 when empty */
+  int32_t *next, *prev; /* lists through the particles */
+  int32_t *cell;      /* cell of each particle */
+} wg_cells;
+
+/* The grid over [lo, lo + len) with cells of width >= range; periodic axes need >= 3 cells. */
+int wg_cells_alloc(wg_cells *c, int dim, const double *lo, const double *len,
+                   const int *periodic, double range, long n);
+void wg_cells_free(wg_cells *c);
+
+/* Cell containing position r (wrapped on periodic axes, clamped on the others). */
+long wg_cells_locate(const wg_cells *c, const double *r);
+void wg_cells_insert(wg_cells *c, long i, long cell);
+void wg_cells_remove(wg_cells *c, long i);
+/* Empty all cells and insert particles 0..n-1 at their positions (deterministic order). */
+void wg_cells_rebuild(wg_cells *c, long n, const double *r, size_t stride);
+
+/* Index of the cell one step along axis (dir = +1/-1), or -1 past a non-periodic edge;
+   *wrapped is set to +1/-1 when the step crosses a periodic boundary upwards/downwards. */
+long wg_cells_step(const wg_cells *c, long cell, int axis, int dir, int *wrapped);
+
+/* The 3^dim cells around a cell (itself included, duplicates and out-of-grid cells left
+   out); returns their number. */
+int wg_cells_stencil(const wg_cells *c, long cell, long *out);
+/* The 3^(dim-1) cells of the stencil's face one layer beyond cell along axis/dir: the cells
+   that join the stencil when a particle has just stepped into `cell` moving along axis/dir. */
+int wg_cells_face(const wg_cells *c, long cell, int axis, int dir, long *out);
+
+/* Time, counted from the particle's reference point r, v (gravity g along -axis dim-1), at
+   which it leaves `cell`, not earlier than tau_now; *axis and *dir tell through which face.
+   The face (skip_axis, skip_dir) is left out (skip_axis = -1: none): the one just crossed,
+   so that a particle grazing a face at the top of its flight does not cross back and forth.
+   INFINITY if never. */
+double wg_cells_exit_time(const wg_cells *c, long cell, const double *r, const double *v,
+                          double g, double tau_now, int skip_axis, int skip_dir, int *axis,
+                          int *dir);
+
+#endif

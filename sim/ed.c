@@ -1,0 +1,647 @@
+/* Event-driven engine: set-up, prediction and processing of events.  Equation numbers
+   refer to the thesis (Roeller 2010); the bridge and wall rules to ../shared/spec/model.md. */
+#include "ed.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "init.h"
+
+/* Bonds a particle can hold: a disk touches at most 6 equal neighbours, a sphere 12; the
+   polydisperse margin and the gap s_crit leave room for a few more. */
+enum { BOND_CAP_2D = 8, BOND_CAP_3D = 16 };
+/* Consecutive events at one instant beyond which a run is declared stuck. */
+#define STUCK_EVENTS 10000000ULL
+/* Without the TC model, the time scale of wall_min_speed [sqrt(d/g)]. */
+#define WALL_MIN_TIME 1e-12
+
+/* ---------- small helpers ---------- */
+
+double wg_ksum_value(const wg_ksum *k) { return k->s + k->c; }
+
+/* Neumaier's compensated sum: value = s + c. */
+static void ksum_add(wg_ksum *k, double x)
+{
+  double t = k->s + x;
+  if (fabs(k->s) >= fabs(x)) k->c += (k->s - t) + x;
+  else k->c += (x - t) + k->s;
+  k->s = t;
+}
+
+static inline double dot(const double *a, const double *b, int dim)
+{
+  double s = a[0] * b[0] + a[1] * b[1];
+  return dim == 3 ? s + a[2] * b[2] : s;
+}
+
+static inline double reduced_mass(const wg_ed *s, long i, long j)
+{
+  double mi = wg_ed_mass(s, i), mj = wg_ed_mass(s, j);
+  return mi * mj / (mi + mj);
+}
+
+/* Move particle i along its trajectory to time t. */
+static void advance(wg_ed *s, long i, double t)
+{
+  wg_particle *p = &s->p[i];
+  double dt = t - p->t;
+  if (dt == 0) return;
+  for (int k = 0; k < s->dim; k++) p->r[k] += p->v[k] * dt;
+  if (s->g > 0) {
+    p->r[s->up] -= 0.5 * s->g * dt * dt;
+    p->v[s->up] -= s->g * dt;
+  }
+  p->t = t;
+}
+
+void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v)
+{
+  const wg_particle *p = &s->p[i];
+  double dt = t - p->t;
+  for (int k = 0; k < s->dim; k++) {
+    r[k] = p->r[k] + p->v[k] * dt;
+    v[k] = p->v[k];
+  }
+  if (s->g > 0) {
+    r[s->up] -= 0.5 * s->g * dt * dt;
+    v[s->up] -= s->g * dt;
+  }
+  for (int k = 0; k < s->dim; k++)
+    if (s->periodic[k]) {
+      r[k] = fmod(r[k], s->box[k]);
+      if (r[k] < 0) r[k] += s->box[k];
+    }
+}
+
+/* Separation dr = r_j - r_i (minimum image) and relative velocity dv = v_j - v_i at the
+   later of the two local times, which is returned.  Gravity drops out of relative motion
+   except through the different local times. */
+static double pair_state(const wg_ed *s, long i, long j, double *dr, double *dv)
+{
+  const wg_particle *a = &s->p[i], *b = &s->p[j];
+  double t = a->t > b->t ? a->t : b->t;
+  double ta = t - a->t, tb = t - b->t;
+  for (int k = 0; k < s->dim; k++) {
+    dr[k] = (b->r[k] + b->v[k] * tb) - (a->r[k] + a->v[k] * ta);
+    dv[k] = b->v[k] - a->v[k];
+  }
+  if (s->g > 0) {
+    dr[s->up] -= 0.5 * s->g * (tb * tb - ta * ta);
+    dv[s->up] -= s->g * (tb - ta);
+  }
+  for (int k = 0; k < s->dim; k++)
+    if (s->periodic[k]) {
+      if (dr[k] > 0.5 * s->box[k]) dr[k] -= s->box[k];
+      else if (dr[k] < -0.5 * s->box[k]) dr[k] += s->box[k];
+    }
+  return t;
+}
+
+/* ---------- bonds ---------- */
+
+int wg_ed_bonded(const wg_ed *s, long i, long j)
+{
+  const int32_t *b = s->bond + (size_t)i * s->bond_cap;
+  for (int k = 0; k < s->nbond[i]; k++)
+    if (b[k] == j) return 1;
+  return 0;
+}
+
+long wg_ed_bond_total(const wg_ed *s)
+{
+  long total = 0;
+  if (!s->wet) return 0;
+  for (long i = 0; i < s->n; i++) total += s->nbond[i];
+  return total / 2;
+}
+
+static int bond_add_one(wg_ed *s, long i, long j)
+{
+  if (s->nbond[i] >= s->bond_cap)
+    return wg_error(WG_ERANGE, "bridges",
+                    "particle %ld would hold more than %d bridges at t = %.17g", i, s->bond_cap,
+                    s->now);
+  s->bond[(size_t)i * s->bond_cap + s->nbond[i]++] = (int32_t)j;
+  return WG_OK;
+}
+
+static void bond_remove_one(wg_ed *s, long i, long j)
+{
+  int32_t *b = s->bond + (size_t)i * s->bond_cap;
+  for (int k = 0; k < s->nbond[i]; k++)
+    if (b[k] == j) {
+      b[k] = b[--s->nbond[i]];
+      return;
+    }
+}
+
+/* ---------- prediction ---------- */
+
+typedef struct candidate {
+  double t;
+  int type;
+  int32_t partner;
+} candidate;
+
+static inline void consider(candidate *best, double t, int type, long partner)
+{
+  if (t < best->t) {
+    best->t = t;
+    best->type = type;
+    best->partner = (int32_t)partner;
+  }
+}
+
+/* Earliest event of pair (i, j): hard-core contact while approaching (Eq. B.3), or, for a
+   bonded pair, the moment the gap reaches s_crit.  Overlapping pairs that approach collide
+   at once; overlapping pairs that separate are left alone (App. B.5.6). */
+static void predict_pair(const wg_ed *s, long i, long j, candidate *best)
+{
+  double dr[3], dv[3];
+  double t0 = pair_state(s, i, j, dr, dv);
+  double b = dot(dr, dv, s->dim);
+  double r2 = dot(dr, dr, s->dim);
+  double a = dot(dv, dv, s->dim);
+  double sigma = s->p[i].radius + s->p[j].radius;
+  double now = s->now;
+  if (b < 0) {
+    double c = r2 - sigma * sigma;
+    if (c <= 0) {
+      consider(best, t0 > now ? t0 : now, WG_EV_COLLISION, j);
+      return;
+    }
+    double disc = b * b - a * c;
+    if (disc > 0) {
+      double t = t0 + c / (-b + sqrt(disc));
+      consider(best, t > now ? t : now, WG_EV_COLLISION, j);
+      return;
+    }
+  }
+  if (s->wet && wg_ed_bonded(s, i, j)) {
+    double edge = sigma + s->s_crit;
+    double c = r2 - edge * edge;
+    double t;
+    if (c >= 0) {
+      if (b <= 0) return;
+      t = t0;
+    } else {
+      if (a == 0) return;
+      double disc = b * b - a * c;
+      t = t0 + (b > 0 ? -c / (b + sqrt(disc)) : (-b + sqrt(disc)) / a);
+    }
+    consider(best, t > now ? t : now, WG_EV_BRIDGE_EDGE, j);
+  }
+}
+
+static void predict_walls(wg_ed *s, long i, candidate *best)
+{
+  const wg_particle *p = &s->p[i];
+  wg_ballistic traj = {p->t, p->r[s->up], p->v[s->up], s->g, p->radius};
+  for (int w = 0; w < s->nwalls; w++) {
+    double tau;
+    wg_wall_outcome out = wg_wall_next_event(&s->wall[w], &traj, &tau, &s->wall_stats);
+    if (out == WG_WALL_NONE) continue;
+    double t = p->t + tau;
+    consider(best, t > s->now ? t : s->now, out == WG_WALL_HIT ? WG_EV_WALL_HIT : WG_EV_WALL_ENTER, w);
+  }
+}
+
+static void schedule(wg_ed *s, long i)
+{
+  s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
+  wg_evqueue_update(&s->queue, i);
+}
+
+static void set_phys(wg_ed *s, long i, const candidate *best)
+{
+  s->t_phys[i] = best->t;
+  s->ev_type[i] = (uint8_t)best->type;
+  s->ev_partner[i] = best->partner;
+  if (best->type == WG_EV_COLLISION || best->type == WG_EV_BRIDGE_EDGE)
+    s->ev_count[i] = s->count[best->partner];
+}
+
+/* Next cell crossing; (skip_axis, skip_dir) is the face just entered through, if any. */
+static void predict_cell(wg_ed *s, long i, int skip_axis, int skip_dir)
+{
+  const wg_particle *p = &s->p[i];
+  int axis, dir;
+  double dt = wg_cells_exit_time(&s->cells, s->cells.cell[i], p->r, p->v, s->g, s->now - p->t,
+                                 skip_axis, skip_dir, &axis, &dir);
+  double t = p->t + dt;
+  s->t_cell[i] = t > s->now ? t : s->now;
+  s->cell_axis[i] = (int8_t)axis;
+  s->cell_dir[i] = (int8_t)dir;
+}
+
+/* Every event of particle i afresh: walls, all pairs in the surrounding cells, next cell. */
+static void predict_all(wg_ed *s, long i, int reschedule)
+{
+  candidate best = {INFINITY, WG_EV_NONE, -1};
+  long stencil[27];
+  if (s->nwalls) predict_walls(s, i, &best);
+  int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
+  for (int k = 0; k < m; k++)
+    for (int32_t j = s->cells.head[stencil[k]]; j >= 0; j = s->cells.next[j])
+      if (j != i) predict_pair(s, i, j, &best);
+  set_phys(s, i, &best);
+  predict_cell(s, i, -1, 0);
+  if (reschedule) schedule(s, i);
+}
+
+/* ---------- events ---------- */
+
+/* Contact of two hard particles with restitution (Eq. 2.3-2.6 for any masses):
+   dv_i = (1 + e) mu/m_i (u.n) n.  The TC model makes the collision elastic when either
+   particle collided less than tc ago.  An unbonded wet pair forms a bridge. */
+static int collide(wg_ed *s, long i, long j)
+{
+  double dr[3], dv[3];
+  pair_state(s, i, j, dr, dv);
+  double dist = sqrt(dot(dr, dr, s->dim));
+  double n[3] = {dr[0] / dist, dr[1] / dist, s->dim == 3 ? dr[2] / dist : 0};
+  double un = dot(dv, n, s->dim);
+  if (un >= 0) return WG_OK; /* already separating: nothing to do */
+  double e = s->eps;
+  if (s->t_last) {
+    if (s->now - s->t_last[i] < s->tc || s->now - s->t_last[j] < s->tc) e = 1;
+    s->t_last[i] = s->t_last[j] = s->now;
+  }
+  double mu = reduced_mass(s, i, j);
+  double J = (1 + e) * mu * un;
+  double ki = J / wg_ed_mass(s, i), kj = J / wg_ed_mass(s, j);
+  for (int k = 0; k < s->dim; k++) {
+    s->p[i].v[k] += ki * n[k];
+    s->p[j].v[k] -= kj * n[k];
+  }
+  s->virial -= dist * J;
+  if (e < 1) ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
+  s->counts.collisions++;
+  if (s->wet && !wg_ed_bonded(s, i, j)) {
+    int st = bond_add_one(s, i, j);
+    if (st == WG_OK) st = bond_add_one(s, j, i);
+    if (st != WG_OK) return st;
+    s->counts.captures++;
+  }
+  return WG_OK;
+}
+
+/* A bonded pair separating through gap s_crit (thin-thread model): the bridge ruptures if
+   the normal kinetic energy exceeds E_cb, taking exactly E_cb; otherwise the pair is
+   reflected back into the well without loss. */
+static void bridge_edge(wg_ed *s, long i, long j)
+{
+  double dr[3], dv[3];
+  pair_state(s, i, j, dr, dv);
+  double dist = sqrt(dot(dr, dr, s->dim));
+  double n[3] = {dr[0] / dist, dr[1] / dist, s->dim == 3 ? dr[2] / dist : 0};
+  double un = dot(dv, n, s->dim);
+  if (un <= 0) return;
+  double mu = reduced_mass(s, i, j);
+  double un_after;
+  if (0.5 * mu * un * un > s->e_cb) {
+    un_after = sqrt(un * un - 2 * s->e_cb / mu);
+    bond_remove_one(s, i, j);
+    bond_remove_one(s, j, i);
+    ksum_add(&s->ledger.dissipated_rupt, s->e_cb);
+    s->counts.ruptures++;
+  } else {
+    un_after = -un;
+    s->counts.reflections++;
+  }
+  double du = un_after - un;
+  double ki = mu * du / wg_ed_mass(s, i), kj = mu * du / wg_ed_mass(s, j);
+  for (int k = 0; k < s->dim; k++) {
+    s->p[i].v[k] -= ki * n[k];
+    s->p[j].v[k] += kj * n[k];
+  }
+}
+
+/* Reflection at a moving wall: the velocity relative to the wall reverses and shrinks by
+   eps_wall.  A particle pressed onto a wall that accelerates towards it would bounce ever
+   more often (the wall's inelastic collapse); it leaves with at least wall_min_speed, the
+   speed at which the wall catches it again only after about 2 tc.  The wall's work and the
+   loss go to the ledger either way. */
+static void wall_collide(wg_ed *s, long i, int w)
+{
+  wg_particle *p = &s->p[i];
+  int side = s->wall[w].side;
+  double vw = wg_wall_velocity(&s->wall[w], s->now);
+  double v = p->v[s->up];
+  double u = v - vw;
+  double e = s->eps_wall;
+  if (s->t_last) {
+    if (s->now - s->t_last[i] < s->tc) e = 1;
+    s->t_last[i] = s->now;
+  }
+  double m = wg_ed_mass(s, i);
+  double loss = 0;
+  double v_after = v;
+  if (u * side < 0) { /* closing */
+    v_after = vw - e * u;
+    loss = 0.5 * m * (1 - e * e) * u * u;
+  }
+  if ((v_after - vw) * side < s->wall_min_speed) v_after = vw + side * s->wall_min_speed;
+  p->v[s->up] = v_after;
+  ksum_add(&s->ledger.injected_wall, 0.5 * m * (v_after * v_after - v * v) + loss);
+  if (loss > 0) ksum_add(&s->ledger.dissipated_wall, loss);
+  s->counts.wall_hits++;
+}
+
+static void cell_crossing(wg_ed *s, long i)
+{
+  int axis = s->cell_axis[i], dir = s->cell_dir[i], wrapped;
+  long from = s->cells.cell[i];
+  long to = wg_cells_step(&s->cells, from, axis, dir, &wrapped);
+  s->counts.cell_crossings++;
+  if (to < 0) { /* cannot happen: the outer cells have no outward face */
+    s->t_cell[i] = INFINITY;
+    schedule(s, i);
+    return;
+  }
+  if (wrapped) s->p[i].r[axis] -= wrapped * s->box[axis];
+  wg_cells_remove(&s->cells, i);
+  wg_cells_insert(&s->cells, i, to);
+  /* only the particles in the newly adjacent cells can add an earlier event */
+  candidate best = {s->t_phys[i], s->ev_type[i], s->ev_partner[i]};
+  long face[9];
+  int m = wg_cells_face(&s->cells, to, axis, dir, face);
+  for (int k = 0; k < m; k++)
+    for (int32_t j = s->cells.head[face[k]]; j >= 0; j = s->cells.next[j])
+      if (j != i) predict_pair(s, i, j, &best);
+  if (best.t < s->t_phys[i]) set_phys(s, i, &best);
+  predict_cell(s, i, axis, -dir);
+  schedule(s, i);
+}
+
+static int physical_event(wg_ed *s, long i)
+{
+  long j = s->ev_partner[i];
+  int type = s->ev_type[i];
+  int st = WG_OK;
+  switch (type) {
+  case WG_EV_COLLISION:
+  case WG_EV_BRIDGE_EDGE:
+    if (s->count[j] != s->ev_count[i]) { /* partner moved since: predict again */
+      s->counts.stale++;
+      predict_all(s, i, 1);
+      return WG_OK;
+    }
+    advance(s, i, s->now);
+    advance(s, j, s->now);
+    if (type == WG_EV_COLLISION) st = collide(s, i, j);
+    else bridge_edge(s, i, j);
+    s->count[i]++;
+    s->count[j]++;
+    predict_all(s, i, 1);
+    predict_all(s, j, 1);
+    return st;
+  case WG_EV_WALL_HIT:
+    advance(s, i, s->now);
+    wall_collide(s, i, (int)j);
+    s->count[i]++;
+    predict_all(s, i, 1);
+    return WG_OK;
+  case WG_EV_WALL_ENTER:
+    /* same trajectory, new reference point: the solver then sees the particle inside */
+    advance(s, i, s->now);
+    s->counts.wall_enters++;
+    predict_all(s, i, 1);
+    return WG_OK;
+  default:
+    return wg_error(WG_EFAIL, "event loop", "particle %ld has no event at t = %g", i, s->now);
+  }
+}
+
+int wg_ed_advance(wg_ed *s, double t_stop)
+{
+  for (;;) {
+    long i = wg_evqueue_top(&s->queue);
+    double t = s->key[i];
+    if (!(t <= t_stop)) break;
+    if (t == s->now) {
+      if (++s->zero_time_run > STUCK_EVENTS)
+        return wg_error(WG_ERANGE, "event loop",
+                        "more than %llu events at the same instant t = %.17g (particle %ld): "
+                        "the run is stuck", STUCK_EVENTS, t, i);
+    } else {
+      s->zero_time_run = 0;
+    }
+    s->now = t;
+    if (s->t_cell[i] <= s->t_phys[i]) {
+      cell_crossing(s, i);
+    } else {
+      int st = physical_event(s, i);
+      if (st != WG_OK) return st;
+    }
+  }
+  s->now = t_stop;
+  return WG_OK;
+}
+
+void wg_ed_synchronize(wg_ed *s)
+{
+  for (long i = 0; i < s->n; i++) {
+    advance(s, i, s->now);
+    for (int k = 0; k < s->dim; k++)
+      if (s->periodic[k]) {
+        s->p[i].r[k] = fmod(s->p[i].r[k], s->box[k]);
+        if (s->p[i].r[k] < 0) s->p[i].r[k] += s->box[k];
+      }
+    s->count[i] = 0;
+  }
+  wg_cells_rebuild(&s->cells, s->n, s->p[0].r, sizeof(wg_particle) / sizeof(double));
+  for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
+  for (long i = 0; i < s->n; i++)
+    s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
+  wg_evqueue_build(&s->queue);
+  s->zero_time_run = 0;
+}
+
+/* ---------- energy ---------- */
+
+void wg_ed_energy(const wg_ed *s, double *kinetic, double *potential)
+{
+  double ek = 0, ep = 0;
+  for (long i = 0; i < s->n; i++) {
+    double r[3], v[3];
+    wg_ed_position_at(s, i, s->now, r, v);
+    double m = wg_ed_mass(s, i);
+    ek += 0.5 * m * dot(v, v, s->dim);
+    ep += m * s->g * r[s->up];
+  }
+  *kinetic = ek;
+  *potential = ep;
+}
+
+double wg_ed_ledger_residual(wg_ed *s)
+{
+  double ek, ep;
+  wg_ed_energy(s, &ek, &ep);
+  const wg_ledger *l = &s->ledger;
+  double in = wg_ksum_value(&l->injected_wall);
+  double out = wg_ksum_value(&l->dissipated_coll) + wg_ksum_value(&l->dissipated_wall) +
+               wg_ksum_value(&l->dissipated_rupt);
+  double level = ek + fabs(ep);
+  if (level > s->ledger.scale) s->ledger.scale = level;
+  double scale = s->ledger.scale > in + out ? s->ledger.scale : in + out;
+  if (scale <= 0) return 0;
+  return fabs(ek + ep - l->e0 - in + out) / scale;
+}
+
+/* ---------- set-up ---------- */
+
+static void *zalloc(size_t n, size_t size, int *fail)
+{
+  void *p = calloc(n ? n : 1, size);
+  if (!p) *fail = 1;
+  return p;
+}
+
+static int setup_common(wg_ed *s, const wg_scene *sc, long n)
+{
+  memset(s, 0, sizeof *s);
+  s->sc = sc;
+  s->dim = sc->dim;
+  s->up = sc->dim - 1;
+  s->n = n;
+  s->g = sc->gravity;
+  s->eps = sc->eps;
+  s->eps_wall = sc->eps_wall;
+  s->tc = sc->tc;
+  s->wet = sc->s_crit > 0 && sc->e_cb > 0;
+  s->s_crit = s->wet ? sc->s_crit : 0;
+  s->e_cb = s->wet ? sc->e_cb : 0;
+  s->bond_cap = s->dim == 2 ? BOND_CAP_2D : BOND_CAP_3D;
+  s->box[0] = sc->lx;
+  if (s->dim == 3) s->box[1] = sc->ly;
+  s->box[s->up] = sc->height;
+  s->periodic[0] = 1;
+  if (s->dim == 3) s->periodic[1] = 1;
+  s->periodic[s->up] = sc->container == WG_CONTAINER_PERIODIC;
+  s->nwalls = sc->container == WG_CONTAINER_SHAKER ? 2 : 0;
+  s->inelastic = s->eps < 1 || (s->nwalls && s->eps_wall < 1);
+  if (s->nwalls) {
+    s->wall[0] = (wg_wall){0.0, sc->amplitude, sc->omega, +1};
+    s->wall[1] = (wg_wall){sc->height, sc->amplitude, sc->omega, -1};
+    double push = s->g + sc->amplitude * sc->omega * sc->omega;
+    s->wall_min_speed = push * (s->tc > 0 ? s->tc : WALL_MIN_TIME);
+  }
+
+  int fail = 0;
+  s->p = zalloc((size_t)n, sizeof *s->p, &fail);
+  s->count = zalloc((size_t)n, sizeof *s->count, &fail);
+  s->t_phys = zalloc((size_t)n, sizeof *s->t_phys, &fail);
+  s->ev_partner = zalloc((size_t)n, sizeof *s->ev_partner, &fail);
+  s->ev_count = zalloc((size_t)n, sizeof *s->ev_count, &fail);
+  s->ev_type = zalloc((size_t)n, sizeof *s->ev_type, &fail);
+  s->t_cell = zalloc((size_t)n, sizeof *s->t_cell, &fail);
+  s->cell_axis = zalloc((size_t)n, sizeof *s->cell_axis, &fail);
+  s->cell_dir = zalloc((size_t)n, sizeof *s->cell_dir, &fail);
+  s->key = zalloc((size_t)n, sizeof *s->key, &fail);
+  if (sc->mass_scaling) s->mass = zalloc((size_t)n, sizeof *s->mass, &fail);
+  if (s->inelastic) s->t_last = zalloc((size_t)n, sizeof *s->t_last, &fail);
+  if (s->wet) {
+    s->bond = zalloc((size_t)n * s->bond_cap, sizeof *s->bond, &fail);
+    s->nbond = zalloc((size_t)n, sizeof *s->nbond, &fail);
+  }
+  if (fail) {
+    wg_ed_free(s);
+    return wg_error(WG_ENOMEM, "engine", "cannot allocate the state of %ld particles", n);
+  }
+  if (s->t_last)
+    for (long i = 0; i < n; i++) s->t_last[i] = -INFINITY;
+  s->cells.head = NULL;
+  int st = wg_evqueue_alloc(&s->queue, n, s->key);
+  if (st != WG_OK) {
+    wg_ed_free(s);
+    return st;
+  }
+  return WG_OK;
+}
+
+/* Cells: wider than the largest diameter plus the bridge range; the vertical grid of a
+   shaker spans everything the walls sweep. */
+static int setup_cells(wg_ed *s)
+{
+  double dmax = 0;
+  for (long i = 0; i < s->n; i++)
+    if (2 * s->p[i].radius > dmax) dmax = 2 * s->p[i].radius;
+  double lo[3] = {0, 0, 0}, len[3] = {s->box[0], s->box[1], s->box[2]};
+  if (s->nwalls) {
+    lo[s->up] = -s->wall[0].A;
+    len[s->up] = s->box[s->up] + 2 * s->wall[0].A;
+  }
+  return wg_cells_alloc(&s->cells, s->dim, lo, len, s->periodic, dmax + s->s_crit, s->n);
+}
+
+int wg_ed_alloc_empty(wg_ed *s, const wg_scene *sc, long n)
+{
+  return setup_common(s, sc, n);
+}
+
+int wg_ed_start(wg_ed *s, double t0)
+{
+  int st = setup_cells(s);
+  if (st != WG_OK) return st;
+  s->now = t0;
+  wg_ed_synchronize(s);
+  double ek, ep;
+  wg_ed_energy(s, &ek, &ep);
+  s->ledger.e0 = ek + ep;
+  s->ledger.scale = ek + fabs(ep);
+  return WG_OK;
+}
+
+int wg_ed_alloc(wg_ed *s, const wg_scene *sc)
+{
+  int st = setup_common(s, sc, sc->n);
+  if (st == WG_OK) st = wg_init_state(sc, s->p, s->mass);
+  if (st == WG_OK) st = wg_ed_start(s, 0.0);
+  if (st != WG_OK) wg_ed_free(s);
+  return st;
+}
+
+int wg_ed_alloc_state(wg_ed *s, const wg_scene *sc, long n, const double *r, const double *v,
+                      const double *radius, const double *mass, double t0)
+{
+  int st = setup_common(s, sc, n);
+  if (st != WG_OK) return st;
+  for (long i = 0; i < n; i++) {
+    for (int k = 0; k < s->dim; k++) {
+      s->p[i].r[k] = r[i * s->dim + k];
+      s->p[i].v[k] = v[i * s->dim + k];
+    }
+    s->p[i].t = t0;
+    s->p[i].radius = radius[i];
+    if (s->mass) s->mass[i] = mass ? mass[i] : 1.0;
+  }
+  st = wg_ed_start(s, t0);
+  if (st != WG_OK) wg_ed_free(s);
+  return st;
+}
+
+size_t wg_ed_bytes(const wg_ed *s)
+{
+  size_t n = (size_t)s->n;
+  size_t per = sizeof *s->p + sizeof *s->count + sizeof *s->t_phys + sizeof *s->ev_partner +
+               sizeof *s->ev_count + sizeof *s->ev_type + sizeof *s->t_cell + sizeof *s->cell_axis +
+               sizeof *s->cell_dir + sizeof *s->key + 3 * sizeof(int32_t) /* cell lists */;
+  size_t bytes = n * per + 2 * (size_t)s->queue.size * sizeof(int32_t) +
+                 (size_t)s->cells.ncell * sizeof(int32_t);
+  if (s->mass) bytes += n * sizeof *s->mass;
+  if (s->t_last) bytes += n * sizeof *s->t_last;
+  if (s->wet) bytes += n * ((size_t)s->bond_cap * sizeof *s->bond + sizeof *s->nbond);
+  return bytes;
+}
+
+void wg_ed_free(wg_ed *s)
+{
+  free(s->p); free(s->count); free(s->t_phys); free(s->ev_partner); free(s->ev_count);
+  free(s->ev_type); free(s->t_cell); free(s->cell_axis); free(s->cell_dir); free(s->key);
+  free(s->mass); free(s->t_last); free(s->bond); free(s->nbond);
+  wg_cells_free(&s->cells);
+  wg_evqueue_free(&s->queue);
+  memset(s, 0, sizeof *s);
+}

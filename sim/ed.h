@@ -1,0 +1,135 @@
+/* The event-driven engine: hard disks (dim 2) or spheres (dim 3) with the thin-thread
+   capillary bridge model, restitution with the TC model, gravity, periodic lateral
+   boundaries and a container whose floor and lid move as A sin(w t) (thesis Ch. 2, App. B).
+   Particles are updated lazily: each keeps its own time t and is moved only when it takes
+   part in an event.  Each particle holds its earliest physical event (collision, bridge
+   edge, wall) and its next cell crossing; a tournament tree orders the particles. */
+#ifndef WG_ED_H
+#define WG_ED_H
+
+#include "cells.h"
+#include "evqueue.h"
+#include "scene.h"
+#include "wall.h"
+
+/* One particle: 64 bytes, one cache line. */
+typedef struct wg_particle {
+  double r[3];     /* centre at local time t [d]; r[dim-1] is the height */
+  double v[3];     /* velocity at local time t [sqrt(g d)] */
+  double t;        /* local time [sqrt(d/g)] */
+  double radius;   /* [d] */
+} wg_particle;
+
+typedef enum {
+  WG_EV_NONE = 0,
+  WG_EV_COLLISION,     /* hard-core contact of a pair */
+  WG_EV_BRIDGE_EDGE,   /* bonded pair reaches gap s_crit: rupture or reflection */
+  WG_EV_WALL_HIT,      /* contact with floor (partner 0) or lid (partner 1) */
+  WG_EV_WALL_ENTER,    /* enters a wall's reach: solve for the exact contact then */
+  WG_EV_CELL           /* cell crossing (bookkeeping) */
+} wg_event_type;
+
+/* Counts of every event type; the ledger of energy. */
+typedef struct wg_counts {
+  unsigned long long collisions, captures, ruptures, reflections, wall_hits, wall_enters,
+      cell_crossings, stale;  /* stale: popped predictions whose partner had moved on */
+} wg_counts;
+
+/* Energy ledger [m g d], compensated (Kahan) sums. */
+typedef struct wg_ksum { double s, c; } wg_ksum;
+typedef struct wg_ledger {
+  wg_ksum injected_wall;     /* work done by the moving walls */
+  wg_ksum dissipated_coll;   /* lost in inelastic particle collisions */
+  wg_ksum dissipated_wall;   /* lost in inelastic wall collisions */
+  wg_ksum dissipated_rupt;   /* taken by bridge ruptures, E_cb each */
+  double e0;                 /* kinetic + potential energy at t = 0 */
+  double scale;              /* largest kinetic + |potential| energy seen; for the residual */
+} wg_ledger;
+
+typedef struct wg_ed {
+  const wg_scene *sc;
+  int dim, up;                 /* up = dim - 1: the vertical axis */
+  long n;
+  double g;                    /* gravity */
+  double box[3];               /* box lengths (periodic axes) */
+  int periodic[3];
+  int nwalls;                  /* 0 (periodic) or 2 (floor, lid) */
+  wg_wall wall[2];
+  int wet;                     /* bridges in use */
+  double s_crit, e_cb;
+  int bond_cap;                /* bonds per particle */
+  int inelastic;               /* eps < 1 or eps_wall < 1: TC bookkeeping */
+  double eps, eps_wall, tc;
+  double wall_min_speed;       /* least speed of a particle leaving a wall (see wall_collide) */
+
+  wg_particle *p;
+  double *mass;                /* NULL: every mass is 1 */
+  uint32_t *count;             /* trajectory changes of each particle (validates predictions) */
+  double *t_last;              /* time of the last collision (TC model); NULL when elastic */
+  int32_t *bond;               /* bond[i * bond_cap + k]: partners of i; NULL when dry */
+  uint8_t *nbond;
+
+  /* next events */
+  double *t_phys;              /* earliest physical event of each particle */
+  int32_t *ev_partner;         /* partner particle, or wall index */
+  uint32_t *ev_count;          /* partner's count at prediction time */
+  uint8_t *ev_type;
+  double *t_cell;              /* next cell crossing */
+  int8_t *cell_axis, *cell_dir;
+  double *key;                 /* min(t_phys, t_cell): what the queue orders */
+
+  wg_cells cells;
+  wg_evqueue queue;
+  double now;                  /* time of the event being processed */
+  wg_counts counts;
+  wg_ledger ledger;
+  double virial;               /* sum over collisions of sigma_ij |J| (pressure, Eq. of state) */
+  wg_wall_stats wall_stats;
+  unsigned long long zero_time_run; /* consecutive events at the same instant (stuck guard) */
+} wg_ed;
+
+/* Set up from a finished scene: allocate, place particles on a lattice with Gaussian
+   velocities (seeded RNG), predict all events. */
+int wg_ed_alloc(wg_ed *s, const wg_scene *sc);
+void wg_ed_free(wg_ed *s);
+
+/* Build with given particle state (positions, velocities, radii, local times all equal to
+   t0) instead of the lattice: used by tests and checkpoint resume.  Radii and, if non-NULL,
+   masses are copied. */
+int wg_ed_alloc_state(wg_ed *s, const wg_scene *sc, long n, const double *r, const double *v,
+                      const double *radius, const double *mass, double t0);
+
+/* The two halves of wg_ed_alloc, for callers that set the state themselves (checkpoint
+   resume): allocate for n particles; then, after p[], mass[], bonds and t_last are filled,
+   build the cells and predict every event with all local times equal to t0.  The energy
+   ledger starts from the energy at t0. */
+int wg_ed_alloc_empty(wg_ed *s, const wg_scene *sc, long n);
+int wg_ed_start(wg_ed *s, double t0);
+
+/* Process events until the next one would lie beyond t_stop; then now = t_stop. */
+int wg_ed_advance(wg_ed *s, double t_stop);
+
+/* Bring every particle to time now, wrap positions into the box, rebuild the cells from
+   positions and predict every event afresh.  The state after this depends only on the
+   particle states, so a checkpointed run resumes bit-identically. */
+void wg_ed_synchronize(wg_ed *s);
+
+/* Position and velocity of particle i extrapolated to time t (no state change). */
+void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v);
+
+static inline double wg_ed_mass(const wg_ed *s, long i) { return s->mass ? s->mass[i] : 1.0; }
+
+/* Kinetic and potential energy of the whole system at time now [m g d]. */
+void wg_ed_energy(const wg_ed *s, double *kinetic, double *potential);
+double wg_ksum_value(const wg_ksum *k);
+/* |E(now) - E(0) - injected + dissipated| / energy scale. */
+double wg_ed_ledger_residual(wg_ed *s);
+
+/* Bytes allocated by the engine (particles, events, queue, cells, bonds). */
+size_t wg_ed_bytes(const wg_ed *s);
+
+/* Bond bookkeeping (wet runs). */
+int wg_ed_bonded(const wg_ed *s, long i, long j);
+long wg_ed_bond_total(const wg_ed *s);
+
+#endif

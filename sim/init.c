@@ -1,0 +1,108 @@
+#include "init.h"
+
+#include <gsl/gsl_randist.h>
+#include <gsl/gsl_rng.h>
+#include <math.h>
+
+double wg_init_temperature(const wg_scene *sc)
+{
+  return sc->tg_init_abs > 0 ? sc->tg_init_abs : sc->tg_init * sc->e_cb;
+}
+
+/* Lattice of sites with spacing close to a over the region lo..lo+len: the number of sites
+   per axis is chosen as the largest spacing that still gives at least n sites. */
+static int lattice_counts(int dim, const double *len, long n, double dmax, int *count)
+{
+  double volume = 1;
+  for (int k = 0; k < dim; k++) volume *= len[k];
+  double a = pow(volume / (double)n, 1.0 / dim);
+  for (int iter = 0; iter < 10000; iter++, a *= 0.995) {
+    long sites = 1;
+    for (int k = 0; k < dim; k++) {
+      count[k] = (int)floor(len[k] / a);
+      if (count[k] < 1) count[k] = 1;
+      sites *= count[k];
+    }
+    if (sites < n) continue;
+    for (int k = 0; k < dim; k++)
+      if (len[k] / count[k] < dmax * 1.0000001 && !(count[k] == 1 && len[k] >= dmax))
+        return wg_error(WG_EINVAL, "initial state",
+                        "%ld particles of diameter up to %g do not fit on a lattice in the "
+                        "container; lower n or enlarge the box", n, dmax);
+    return WG_OK;
+  }
+  return wg_error(WG_EINVAL, "initial state", "no lattice found for %ld particles", n);
+}
+
+int wg_init_state(const wg_scene *sc, wg_particle *p, double *mass)
+{
+  int dim = sc->dim, up = dim - 1;
+  long n = sc->n;
+  double half_width = sqrt(3.0) * sc->sigma_p;
+  double dmax = 1 + half_width;
+  gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+  if (!rng) return wg_error(WG_ENOMEM, "initial state", "cannot allocate the RNG");
+  gsl_rng_set(rng, (unsigned long)sc->seed);
+
+  for (long i = 0; i < n; i++) {
+    double d = 1 + half_width * (2 * gsl_rng_uniform(rng) - 1); /* Eq. 2.21 */
+    p[i].radius = 0.5 * d;
+    p[i].t = 0;
+    if (mass) mass[i] = pow(d, dim);
+  }
+
+  /* Sites fill the box; in a shaker they keep half the largest diameter from the walls. */
+  double lo[3] = {0, 0, 0}, len[3] = {sc->lx, dim == 3 ? sc->ly : sc->height, sc->height};
+  int periodic_z = sc->container == WG_CONTAINER_PERIODIC;
+  if (!periodic_z) {
+    lo[up] = 0.5 * dmax;
+    len[up] = sc->height - dmax;
+  }
+  int count[3];
+  int st = lattice_counts(dim, len, n, dmax, count);
+  if (st != WG_OK) {
+    gsl_rng_free(rng);
+    return st;
+  }
+  for (long i = 0; i < n; i++) {
+    long rest = i;
+    for (int k = 0; k < dim; k++) {
+      long c = rest % count[k];
+      rest /= count[k];
+      double spacing = (!periodic_z && k == up && count[k] > 1) ? len[k] / (count[k] - 1)
+                                                                 : len[k] / count[k];
+      double offset = (!periodic_z && k == up) ? 0 : 0.5 * spacing;
+      p[i].r[k] = lo[k] + offset + c * spacing;
+      if (!periodic_z && k == up && count[k] == 1) p[i].r[k] = lo[k] + 0.5 * len[k];
+    }
+  }
+
+  double T = wg_init_temperature(sc);
+  double msum = 0, vcm[3] = {0, 0, 0};
+  for (long i = 0; i < n; i++) {
+    double m = mass ? mass[i] : 1.0;
+    for (int k = 0; k < dim; k++) {
+      p[i].v[k] = gsl_ran_gaussian(rng, sqrt(T / m));
+      vcm[k] += m * p[i].v[k];
+    }
+    msum += m;
+  }
+  gsl_rng_free(rng);
+  if (n > 1)
+    for (int k = 0; k < dim; k++) vcm[k] /= msum;
+  else
+    vcm[0] = vcm[1] = vcm[2] = 0;
+  double sum2 = 0;
+  for (long i = 0; i < n; i++) {
+    double m = mass ? mass[i] : 1.0;
+    for (int k = 0; k < dim; k++) {
+      p[i].v[k] -= vcm[k];
+      sum2 += m * p[i].v[k] * p[i].v[k];
+    }
+  }
+  double T_now = sum2 / (double)(n * dim); /* Eq. 3.2 */
+  double scale = T_now > 0 ? sqrt(T / T_now) : 0;
+  for (long i = 0; i < n; i++)
+    for (int k = 0; k < dim; k++) p[i].v[k] *= scale;
+  return WG_OK;
+}

@@ -1,0 +1,826 @@
+/* A run of the event-driven engine with its observers, checkpoints and run file. */
+#include "run.h"
+
+#include <errno.h>
+#include <gsl/gsl_version.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "io_h5.h"
+
+#ifndef WG_CFLAGS
+#define WG_CFLAGS "unknown"
+#endif
+
+/* Columns of the time series, in storage order: each becomes /observables/<name>. */
+typedef struct series_column {
+  const char *name, *unit, *description;
+} series_column;
+
+enum {
+  COL_TIME, COL_KINETIC, COL_POTENTIAL, COL_INJ_WALL, COL_DIS_COLL, COL_DIS_WALL, COL_DIS_RUPT,
+  COL_RESIDUAL, COL_TG, COL_BRIDGES, COL_COLLISIONS, COL_CAPTURES, COL_RUPTURES,
+  COL_REFLECTIONS, COL_WALL_HITS, COL_WALL_ENTERS, COL_CELL_CROSSINGS, NCOL
+};
+
+static const series_column columns[NCOL] = {
+    {"time", "sqrt(d/g)", "simulated time of the sample"},
+    {"kinetic_energy", "m g d", "total kinetic energy, sum of m v^2 / 2"},
+    {"potential_energy", "m g d", "total potential energy in gravity, sum of m g z (z = 0 at the floor's mean position)"},
+    {"injected_wall", "m g d", "work done on the particles by the moving walls since t = 0"},
+    {"dissipated_collisions", "m g d", "energy lost in inelastic particle collisions since t = 0 (Eq. 2.6)"},
+    {"dissipated_wall", "m g d", "energy lost in inelastic wall collisions since t = 0"},
+    {"dissipated_ruptures", "m g d", "energy taken by capillary bridge ruptures since t = 0, E_cb each"},
+    {"ledger_residual", "1", "|E(t) - E(0) - injected + dissipated| / energy scale of the run"},
+    {"temperature", "m g d", "granular temperature T_g = sum m |v - V_cm|^2 / (N D) (Eq. 3.2)"},
+    {"bridges", "1", "number of capillary bridges"},
+    {"collisions", "1", "particle-particle collisions since t = 0"},
+    {"captures", "1", "capillary bridges formed since t = 0"},
+    {"ruptures", "1", "capillary bridges ruptured since t = 0"},
+    {"reflections", "1", "bonded pairs reflected at gap s_crit since t = 0"},
+    {"wall_hits", "1", "particle-wall collisions since t = 0"},
+    {"wall_enters", "1", "entries into a wall's reach (exact wall solver calls) since t = 0"},
+    {"cell_crossings", "1", "cell crossings (bookkeeping events) since t = 0"},
+};
+
+static double wall_clock(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+unsigned long long wg_run_events(const wg_run *run)
+{
+  const wg_counts *c = &run->ed.counts;
+  return c->collisions + c->ruptures + c->reflections + c->wall_hits;
+}
+
+/* ---------- observers ---------- */
+
+static double temperature(const wg_ed *s)
+{
+  double msum = 0, mv[3] = {0, 0, 0}, mv2 = 0;
+  for (long i = 0; i < s->n; i++) {
+    double r[3], v[3], m = wg_ed_mass(s, i);
+    wg_ed_position_at(s, i, s->now, r, v);
+    msum += m;
+    for (int k = 0; k < s->dim; k++) {
+      mv[k] += m * v[k];
+      mv2 += m * v[k] * v[k];
+    }
+  }
+  double cm2 = 0;
+  for (int k = 0; k < s->dim; k++) cm2 += mv[k] * mv[k];
+  return (mv2 - cm2 / msum) / (double)(s->n * s->dim); /* Eq. 3.2 */
+}
+
+static int sample_series(wg_run *run)
+{
+  if (run->rows == run->cap) {
+    size_t cap = run->cap ? 2 * run->cap : 1024;
+    double *p = realloc(run->series, sizeof *p * cap * NCOL);
+    if (!p) return wg_error(WG_ENOMEM, "time series", "cannot grow to %zu rows", cap);
+    run->series = p;
+    run->cap = cap;
+  }
+  wg_ed *s = &run->ed;
+  double *row = run->series + run->rows * NCOL;
+  double ek, ep;
+  wg_ed_energy(s, &ek, &ep);
+  row[COL_TIME] = s->now;
+  row[COL_KINETIC] = ek;
+  row[COL_POTENTIAL] = ep;
+  row[COL_INJ_WALL] = wg_ksum_value(&s->ledger.injected_wall);
+  row[COL_DIS_COLL] = wg_ksum_value(&s->ledger.dissipated_coll);
+  row[COL_DIS_WALL] = wg_ksum_value(&s->ledger.dissipated_wall);
+  row[COL_DIS_RUPT] = wg_ksum_value(&s->ledger.dissipated_rupt);
+  row[COL_RESIDUAL] = wg_ed_ledger_residual(s);
+  row[COL_TG] = temperature(s);
+  row[COL_BRIDGES] = (double)wg_ed_bond_total(s);
+  row[COL_COLLISIONS] = (double)s->counts.collisions;
+  row[COL_CAPTURES] = (double)s->counts.captures;
+  row[COL_RUPTURES] = (double)s->counts.ruptures;
+  row[COL_REFLECTIONS] = (double)s->counts.reflections;
+  row[COL_WALL_HITS] = (double)s->counts.wall_hits;
+  row[COL_WALL_ENTERS] = (double)s->counts.wall_enters;
+  row[COL_CELL_CROSSINGS] = (double)s->counts.cell_crossings;
+  run->rows++;
+  return WG_OK;
+}
+
+static int profile_alloc(wg_profile *pr, int bins)
+{
+  pr->bins = bins;
+  pr->samples = 0;
+  size_t b = (size_t)(bins > 0 ? bins : 1);
+  pr->count = calloc(b, sizeof(double));
+  pr->volume = calloc(b, sizeof(double));
+  pr->mass = calloc(b, sizeof(double));
+  pr->mom = calloc(3 * b, sizeof(double));
+  pr->mv2 = calloc(b, sizeof(double));
+  pr->bridges = calloc(b, sizeof(double));
+  if (!pr->count || !pr->volume || !pr->mass || !pr->mom || !pr->mv2 || !pr->bridges)
+    return wg_error(WG_ENOMEM, "profiles", "cannot allocate %d bins", bins);
+  return WG_OK;
+}
+
+static void profile_free(wg_profile *pr)
+{
+  free(pr->count); free(pr->volume); free(pr->mass); free(pr->mom); free(pr->mv2);
+  free(pr->bridges);
+}
+
+/* One sample of the lateral profiles: every particle adds to the bin of its x coordinate;
+   a bridge counts half in the bin of each of its particles. */
+static void sample_profile(wg_run *run)
+{
+  wg_ed *s = &run->ed;
+  wg_profile *pr = &run->prof;
+  double width = s->box[0] / pr->bins;
+  double unit_volume = s->dim == 2 ? M_PI : 4 * M_PI / 3; /* times radius^dim */
+  for (long i = 0; i < s->n; i++) {
+    double r[3], v[3], m = wg_ed_mass(s, i);
+    wg_ed_position_at(s, i, s->now, r, v);
+    int b = (int)(r[0] / width);
+    if (b >= pr->bins) b = pr->bins - 1;
+    if (b < 0) b = 0;
+    pr->count[b] += 1;
+    pr->volume[b] += unit_volume * pow(s->p[i].radius, s->dim);
+    pr->mass[b] += m;
+    for (int k = 0; k < s->dim; k++) {
+      pr->mom[3 * b + k] += m * v[k];
+      pr->mv2[b] += m * v[k] * v[k];
+    }
+    if (s->wet) pr->bridges[b] += 0.5 * s->nbond[i];
+  }
+  pr->samples++;
+}
+
+/* Snapshot record in the scratch file: positions, velocities (n x dim doubles each),
+   bridge counts (n bytes), bridge pairs i < j (2 x int32 each). */
+static int write_frame(wg_run *run)
+{
+  wg_ed *s = &run->ed;
+  long long nb = 0;
+  size_t bytes = 0;
+  for (long i = 0; i < s->n; i++) {
+    double r[3], v[3];
+    wg_ed_position_at(s, i, s->now, r, v);
+    bytes += fwrite(r, sizeof(double), (size_t)s->dim, run->frames) * sizeof(double);
+  }
+  for (long i = 0; i < s->n; i++) {
+    double r[3], v[3];
+    wg_ed_position_at(s, i, s->now, r, v);
+    bytes += fwrite(v, sizeof(double), (size_t)s->dim, run->frames) * sizeof(double);
+  }
+  for (long i = 0; i < s->n; i++) {
+    uint8_t c = s->wet ? s->nbond[i] : 0;
+    bytes += fwrite(&c, 1, 1, run->frames);
+  }
+  if (s->wet)
+    for (long i = 0; i < s->n; i++)
+      for (int k = 0; k < s->nbond[i]; k++) {
+        int32_t pair[2] = {(int32_t)i, s->bond[(size_t)i * s->bond_cap + k]};
+        if (pair[1] < i) continue;
+        bytes += fwrite(pair, sizeof(int32_t), 2, run->frames) * sizeof(int32_t);
+        nb++;
+      }
+  size_t expect = (size_t)s->n * (2 * s->dim * sizeof(double) + 1) + (size_t)nb * 8;
+  if (bytes != expect || fflush(run->frames) != 0)
+    return wg_error(WG_EIO, run->frames_path, "cannot write snapshot %ld: %s", run->nframes,
+                    strerror(errno));
+  double *ft = realloc(run->frame_time, sizeof(double) * (size_t)(run->nframes + 1));
+  long long *fb = realloc(run->frame_bonds, sizeof(long long) * (size_t)(run->nframes + 1));
+  if (ft) run->frame_time = ft;
+  if (fb) run->frame_bonds = fb;
+  if (!ft || !fb) return wg_error(WG_ENOMEM, "snapshots", "cannot grow the frame index");
+  run->frame_time[run->nframes] = s->now;
+  run->frame_bonds[run->nframes] = nb;
+  run->nframes++;
+  run->frames_bytes += (long long)expect;
+  return WG_OK;
+}
+
+/* ---------- checkpoints ---------- */
+
+static char *scene_fingerprint(const wg_scene *sc);
+
+/* Everything the engine and the observers need to continue, after wg_ed_synchronize(). */
+static int checkpoint_write(wg_run *run)
+{
+  wg_ed *s = &run->ed;
+  char tmp[4200];
+  snprintf(tmp, sizeof tmp, "%s.tmp", run->ckpt_path);
+  hid_t f = wg_h5_create(tmp);
+  if (f < 0) return WG_EIO;
+  int st = WG_OK;
+  long n = s->n;
+  double *buf = malloc(sizeof(double) * (size_t)n * 3);
+  if (!buf) {
+    wg_h5_close(f);
+    return wg_error(WG_ENOMEM, "checkpoint", "no memory");
+  }
+  hsize_t d2[2] = {(hsize_t)n, 3}, d1[1] = {(hsize_t)n};
+  for (long i = 0; i < n; i++) memcpy(buf + 3 * i, s->p[i].r, sizeof(double) * 3);
+  st |= wg_h5_write(f, "state/r", H5T_NATIVE_DOUBLE, 2, d2, buf, "d", "positions at time now");
+  for (long i = 0; i < n; i++) memcpy(buf + 3 * i, s->p[i].v, sizeof(double) * 3);
+  st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, buf, "sqrt(g d)", "velocities");
+  for (long i = 0; i < n; i++) buf[i] = s->p[i].radius;
+  st |= wg_h5_write(f, "state/radius", H5T_NATIVE_DOUBLE, 1, d1, buf, "d", "radii");
+  free(buf);
+  if (s->mass) st |= wg_h5_write(f, "state/mass", H5T_NATIVE_DOUBLE, 1, d1, s->mass, "m", "masses");
+  if (s->t_last)
+    st |= wg_h5_write(f, "state/t_last", H5T_NATIVE_DOUBLE, 1, d1, s->t_last, "sqrt(d/g)",
+                      "time of each particle's last collision (TC model)");
+  if (s->wet) {
+    hsize_t db[1] = {(hsize_t)n * (hsize_t)s->bond_cap};
+    st |= wg_h5_write(f, "state/nbond", H5T_NATIVE_UINT8, 1, d1, s->nbond, "1", "bridges per particle");
+    st |= wg_h5_write(f, "state/bond", H5T_NATIVE_INT32, 1, db, s->bond, "1", "bridge partners, bond_cap per particle");
+  }
+  unsigned long long counts[8] = {s->counts.collisions, s->counts.captures, s->counts.ruptures,
+                                  s->counts.reflections, s->counts.wall_hits, s->counts.wall_enters,
+                                  s->counts.cell_crossings, s->counts.stale};
+  hsize_t d8[1] = {8};
+  st |= wg_h5_write(f, "run/counts", H5T_NATIVE_ULLONG, 1, d8, counts, "1", "event counts");
+  double ledger[10] = {s->ledger.injected_wall.s, s->ledger.injected_wall.c,
+                       s->ledger.dissipated_coll.s, s->ledger.dissipated_coll.c,
+                       s->ledger.dissipated_wall.s, s->ledger.dissipated_wall.c,
+                       s->ledger.dissipated_rupt.s, s->ledger.dissipated_rupt.c,
+                       s->ledger.e0, s->ledger.scale};
+  hsize_t d10[1] = {10};
+  st |= wg_h5_write(f, "run/ledger", H5T_NATIVE_DOUBLE, 1, d10, ledger, "m g d", "ledger sums");
+  unsigned long long ws[3] = {s->wall_stats.calls, s->wall_stats.pieces, s->wall_stats.evaluations};
+  hsize_t d3[1] = {3};
+  st |= wg_h5_write(f, "run/wall_stats", H5T_NATIVE_ULLONG, 1, d3, ws, "1", "wall solver work");
+  hsize_t ds[2] = {run->rows, NCOL};
+  st |= wg_h5_write(f, "run/series", H5T_NATIVE_DOUBLE, 2, ds, run->series, "-", "time series rows");
+  int bins = run->prof.bins > 0 ? run->prof.bins : 1;
+  hsize_t dp[1] = {(hsize_t)bins}, dpm[1] = {3 * (hsize_t)bins};
+  st |= wg_h5_write(f, "run/prof_count", H5T_NATIVE_DOUBLE, 1, dp, run->prof.count, "-", "profile sums");
+  st |= wg_h5_write(f, "run/prof_volume", H5T_NATIVE_DOUBLE, 1, dp, run->prof.volume, "-", "profile sums");
+  st |= wg_h5_write(f, "run/prof_mass", H5T_NATIVE_DOUBLE, 1, dp, run->prof.mass, "-", "profile sums");
+  st |= wg_h5_write(f, "run/prof_mom", H5T_NATIVE_DOUBLE, 1, dpm, run->prof.mom, "-", "profile sums");
+  st |= wg_h5_write(f, "run/prof_mv2", H5T_NATIVE_DOUBLE, 1, dp, run->prof.mv2, "-", "profile sums");
+  st |= wg_h5_write(f, "run/prof_bridges", H5T_NATIVE_DOUBLE, 1, dp, run->prof.bridges, "-", "profile sums");
+  hsize_t df[1] = {(hsize_t)run->nframes};
+  if (run->nframes) {
+    st |= wg_h5_write(f, "run/frame_time", H5T_NATIVE_DOUBLE, 1, df, run->frame_time, "sqrt(d/g)", "frame times");
+    st |= wg_h5_write(f, "run/frame_bonds", H5T_NATIVE_LLONG, 1, df, run->frame_bonds, "1", "bridges per frame");
+  }
+  long long k[7] = {run->k_series, run->k_snapshot, run->k_profile, run->k_checkpoint,
+                    run->prof.samples, run->nframes, run->frames_bytes};
+  hsize_t d7[1] = {7};
+  st |= wg_h5_write(f, "run/counters", H5T_NATIVE_LLONG, 1, d7, k, "1", "sampling counters");
+  st |= wg_h5_attr_double(f, ".", "now", s->now);
+  st |= wg_h5_attr_double(f, ".", "wall_s", wall_clock() - run->wall_start + run->wall_resumed);
+  st |= wg_h5_attr_llong(f, ".", "n", n);
+  char *fp = scene_fingerprint(run->sc);
+  st |= fp ? wg_h5_attr_string(f, ".", "scene", fp) : WG_ENOMEM;
+  free(fp);
+  wg_h5_close(f);
+  if (st != WG_OK) return wg_error(WG_EIO, tmp, "checkpoint not written");
+  if (rename(tmp, run->ckpt_path) != 0)
+    return wg_error(WG_EIO, run->ckpt_path, "cannot rename checkpoint: %s", strerror(errno));
+  return WG_OK;
+}
+
+static int read_into(hid_t f, const char *ckpt, const char *path, hid_t type, void *buf, hsize_t expect)
+{
+  int rank;
+  hsize_t dims[8];
+  if (wg_h5_dims(f, path, &rank, dims) != WG_OK) return WG_EIO;
+  hsize_t total = 1;
+  for (int k = 0; k < rank; k++) total *= dims[k];
+  if (total != expect)
+    return wg_error(WG_EIO, ckpt, "dataset %s has %llu values, expected %llu", path,
+                    (unsigned long long)total, (unsigned long long)expect);
+  return wg_h5_read(f, path, type, buf);
+}
+
+static int checkpoint_load(wg_run *run)
+{
+  const char *ck = run->ckpt_path;
+  hid_t f = wg_h5_open_read(ck);
+  if (f < 0) return WG_EIO;
+  wg_ed *s = &run->ed;
+  long long n;
+  double now, wall_s;
+  int st = wg_h5_read_attr_llong(f, ".", "n", &n);
+  st |= wg_h5_read_attr_double(f, ".", "now", &now);
+  st |= wg_h5_read_attr_double(f, ".", "wall_s", &wall_s);
+  if (st != WG_OK || n != run->sc->n) {
+    wg_h5_close(f);
+    return wg_error(WG_EIO, ck, "checkpoint does not match the scene (n = %lld); rerun with --fresh", n);
+  }
+  st = wg_ed_alloc_empty(s, run->sc, (long)n);
+  if (st != WG_OK) {
+    wg_h5_close(f);
+    return st;
+  }
+  double *buf = malloc(sizeof(double) * (size_t)n * 3);
+  if (!buf) {
+    wg_h5_close(f);
+    return wg_error(WG_ENOMEM, "checkpoint", "no memory");
+  }
+  st = read_into(f, ck, "state/r", H5T_NATIVE_DOUBLE, buf, (hsize_t)n * 3);
+  for (long i = 0; st == WG_OK && i < n; i++) memcpy(s->p[i].r, buf + 3 * i, sizeof(double) * 3);
+  if (st == WG_OK) st = read_into(f, ck, "state/v", H5T_NATIVE_DOUBLE, buf, (hsize_t)n * 3);
+  for (long i = 0; st == WG_OK && i < n; i++) memcpy(s->p[i].v, buf + 3 * i, sizeof(double) * 3);
+  if (st == WG_OK) st = read_into(f, ck, "state/radius", H5T_NATIVE_DOUBLE, buf, (hsize_t)n);
+  for (long i = 0; st == WG_OK && i < n; i++) {
+    s->p[i].radius = buf[i];
+    s->p[i].t = now;
+  }
+  free(buf);
+  if (st == WG_OK && s->mass) st = read_into(f, ck, "state/mass", H5T_NATIVE_DOUBLE, s->mass, (hsize_t)n);
+  if (st == WG_OK && s->t_last) st = read_into(f, ck, "state/t_last", H5T_NATIVE_DOUBLE, s->t_last, (hsize_t)n);
+  if (st == WG_OK && s->wet) {
+    st = read_into(f, ck, "state/nbond", H5T_NATIVE_UINT8, s->nbond, (hsize_t)n);
+    if (st == WG_OK)
+      st = read_into(f, ck, "state/bond", H5T_NATIVE_INT32, s->bond, (hsize_t)n * (hsize_t)s->bond_cap);
+  }
+  unsigned long long counts[8], ws[3];
+  double ledger[10];
+  long long k[7];
+  if (st == WG_OK) st = read_into(f, ck, "run/counts", H5T_NATIVE_ULLONG, counts, 8);
+  if (st == WG_OK) st = read_into(f, ck, "run/ledger", H5T_NATIVE_DOUBLE, ledger, 10);
+  if (st == WG_OK) st = read_into(f, ck, "run/wall_stats", H5T_NATIVE_ULLONG, ws, 3);
+  if (st == WG_OK) st = read_into(f, ck, "run/counters", H5T_NATIVE_LLONG, k, 7);
+  int rank;
+  hsize_t dims[8] = {0};
+  if (st == WG_OK) st = wg_h5_dims(f, "run/series", &rank, dims);
+  if (st == WG_OK) {
+    run->rows = run->cap = dims[0];
+    run->series = malloc(sizeof(double) * (dims[0] ? dims[0] : 1) * NCOL);
+    if (!run->series) st = WG_ENOMEM;
+    else if (dims[0]) st = read_into(f, ck, "run/series", H5T_NATIVE_DOUBLE, run->series, dims[0] * NCOL);
+  }
+  int bins = run->prof.bins > 0 ? run->prof.bins : 1;
+  if (st == WG_OK) st = read_into(f, ck, "run/prof_count", H5T_NATIVE_DOUBLE, run->prof.count, (hsize_t)bins);
+  if (st == WG_OK) st = read_into(f, ck, "run/prof_volume", H5T_NATIVE_DOUBLE, run->prof.volume, (hsize_t)bins);
+  if (st == WG_OK) st = read_into(f, ck, "run/prof_mass", H5T_NATIVE_DOUBLE, run->prof.mass, (hsize_t)bins);
+  if (st == WG_OK) st = read_into(f, ck, "run/prof_mom", H5T_NATIVE_DOUBLE, run->prof.mom, 3 * (hsize_t)bins);
+  if (st == WG_OK) st = read_into(f, ck, "run/prof_mv2", H5T_NATIVE_DOUBLE, run->prof.mv2, (hsize_t)bins);
+  if (st == WG_OK) st = read_into(f, ck, "run/prof_bridges", H5T_NATIVE_DOUBLE, run->prof.bridges, (hsize_t)bins);
+  if (st == WG_OK && k[5] > 0) {
+    run->frame_time = malloc(sizeof(double) * (size_t)k[5]);
+    run->frame_bonds = malloc(sizeof(long long) * (size_t)k[5]);
+    if (!run->frame_time || !run->frame_bonds) st = WG_ENOMEM;
+    if (st == WG_OK) st = read_into(f, ck, "run/frame_time", H5T_NATIVE_DOUBLE, run->frame_time, (hsize_t)k[5]);
+    if (st == WG_OK) st = read_into(f, ck, "run/frame_bonds", H5T_NATIVE_LLONG, run->frame_bonds, (hsize_t)k[5]);
+  }
+  wg_h5_close(f);
+  if (st != WG_OK) return wg_error(WG_EIO, ck, "cannot read the checkpoint; rerun with --fresh");
+
+  s->counts = (wg_counts){counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7]};
+  s->wall_stats = (wg_wall_stats){ws[0], ws[1], ws[2]};
+  run->k_series = k[0];
+  run->k_snapshot = k[1];
+  run->k_profile = k[2];
+  run->k_checkpoint = k[3];
+  run->prof.samples = (long)k[4];
+  run->nframes = (long)k[5];
+  run->frames_bytes = k[6];
+  run->wall_resumed = wall_s;
+  st = wg_ed_start(s, now);
+  if (st != WG_OK) return st;
+  s->ledger = (wg_ledger){{ledger[0], ledger[1]}, {ledger[2], ledger[3]}, {ledger[4], ledger[5]},
+                          {ledger[6], ledger[7]}, ledger[8], ledger[9]};
+  /* the snapshot scratch file continues exactly after the checkpoint's last frame */
+  if (truncate(run->frames_path, (off_t)run->frames_bytes) != 0)
+    return wg_error(WG_EIO, run->frames_path, "cannot resume the snapshot file: %s", strerror(errno));
+  run->frames = fopen(run->frames_path, "ab");
+  if (!run->frames) return wg_error(WG_EIO, run->frames_path, "cannot open: %s", strerror(errno));
+  return WG_OK;
+}
+
+/* ---------- the run file ---------- */
+
+typedef struct text_buf {
+  char *s;
+  size_t len, cap;
+} text_buf;
+
+static int text_append(void *user, const char *key, const char *value, const char *unit,
+                       const char *description)
+{
+  text_buf *t = user;
+  (void)unit;
+  (void)description;
+  size_t need = strlen(key) + strlen(value) + 4;
+  if (t->len + need >= t->cap) {
+    size_t cap = 2 * (t->cap + need);
+    char *p = realloc(t->s, cap);
+    if (!p) return WG_ENOMEM;
+    t->s = p;
+    t->cap = cap;
+  }
+  t->len += (size_t)sprintf(t->s + t->len, "%s = %s\n", key, value);
+  return WG_OK;
+}
+
+/* All parameters as "key = value" lines: identifies the configuration of a checkpoint. */
+static char *scene_fingerprint(const wg_scene *sc)
+{
+  text_buf t = {NULL, 0, 0};
+  if (wg_scene_visit(sc, text_append, &t) != WG_OK) {
+    free(t.s);
+    return NULL;
+  }
+  return t.s;
+}
+
+static int parameter_attr(void *user, const char *key, const char *value, const char *unit,
+                          const char *description)
+{
+  hid_t g = *(hid_t *)user;
+  (void)unit;
+  (void)description;
+  return wg_h5_attr_string(g, ".", key, value);
+}
+
+static int write_parameters(wg_run *run, hid_t f)
+{
+  hid_t g = wg_h5_group(f, "/parameters");
+  if (g < 0) return WG_EIO;
+  int st = wg_scene_visit(run->sc, parameter_attr, &g);
+  H5Gclose(g);
+  return st;
+}
+
+static int write_provenance(wg_run *run, hid_t f, double wall_s)
+{
+  unsigned maj, min, rel;
+  char buf[128];
+  H5get_libversion(&maj, &min, &rel);
+  snprintf(buf, sizeof buf, "%u.%u.%u", maj, min, rel);
+  int st = WG_OK;
+  hid_t g = wg_h5_group(f, "/provenance");
+  if (g < 0) return WG_EIO;
+  st |= wg_h5_attr_string(g, ".", "wetgran_version", wg_version());
+  st |= wg_h5_attr_string(g, ".", "compiler", __VERSION__);
+  st |= wg_h5_attr_string(g, ".", "cflags", WG_CFLAGS);
+  st |= wg_h5_attr_string(g, ".", "hdf5_version", buf);
+  st |= wg_h5_attr_string(g, ".", "gsl_version", gsl_version);
+  st |= wg_h5_attr_string(g, ".", "command_line", run->opt.command_line ? run->opt.command_line : "");
+  st |= wg_h5_attr_string(g, ".", "scene_file", run->sc->source);
+  st |= wg_h5_attr_string(g, ".", "scene_text", run->opt.scene_text ? run->opt.scene_text : "");
+  st |= wg_h5_attr_llong(g, ".", "seed", (long long)run->sc->seed);
+  st |= wg_h5_attr_string(g, ".", "rng", "GSL mt19937 (gsl_rng_set with the seed); diameters, then Gaussian velocities");
+  H5Gclose(g);
+
+  hid_t v = wg_h5_group(f, "/provenance/volatile");
+  if (v < 0) return WG_EIO;
+  char host[64] = "", date[64] = "";
+  double events = (double)wg_run_events(run);
+  if (run->opt.no_volatile) {
+    wall_s = 0;
+    events = 0;
+  } else {
+    gethostname(host, sizeof host - 1);
+    time_t now = time(NULL);
+    strftime(date, sizeof date, "%Y-%m-%dT%H:%M:%SZ", gmtime(&now));
+  }
+  st |= wg_h5_attr_double(v, ".", "wall_s", wall_s);
+  st |= wg_h5_attr_double(v, ".", "events_per_s", wall_s > 0 ? events / wall_s : 0);
+  st |= wg_h5_attr_string_fixed(v, ".", "host", host, 64);
+  st |= wg_h5_attr_string_fixed(v, ".", "date", date, 64);
+  H5Gclose(v);
+  return st;
+}
+
+static int write_series(wg_run *run, hid_t f)
+{
+  int st = WG_OK;
+  double *col = malloc(sizeof(double) * (run->rows ? run->rows : 1));
+  long long *step = malloc(sizeof(long long) * (run->rows ? run->rows : 1));
+  if (!col || !step) {
+    free(col);
+    free(step);
+    return wg_error(WG_ENOMEM, "run file", "no memory for the time series");
+  }
+  for (size_t r = 0; r < run->rows; r++) step[r] = (long long)r;
+  for (int c = 1; c < NCOL && st == WG_OK; c++) {
+    char path[160];
+    hsize_t dims[1] = {run->rows};
+    for (size_t r = 0; r < run->rows; r++) col[r] = run->series[r * NCOL + c];
+    snprintf(path, sizeof path, "/observables/%s/value", columns[c].name);
+    st |= wg_h5_write(f, path, H5T_NATIVE_DOUBLE, 1, dims, col, columns[c].unit, columns[c].description);
+    for (size_t r = 0; r < run->rows; r++) col[r] = run->series[r * NCOL + COL_TIME];
+    snprintf(path, sizeof path, "/observables/%s/time", columns[c].name);
+    st |= wg_h5_write(f, path, H5T_NATIVE_DOUBLE, 1, dims, col, columns[COL_TIME].unit, columns[COL_TIME].description);
+    snprintf(path, sizeof path, "/observables/%s/step", columns[c].name);
+    st |= wg_h5_write(f, path, H5T_NATIVE_LLONG, 1, dims, step, "1", "index of the sample");
+  }
+  free(col);
+  free(step);
+  return st;
+}
+
+static int write_profiles(wg_run *run, hid_t f)
+{
+  const wg_profile *pr = &run->prof;
+  const wg_ed *s = &run->ed;
+  if (pr->bins <= 0) return WG_OK;
+  int b = pr->bins;
+  double width = s->box[0] / b;
+  double cross = s->dim == 3 ? s->box[1] : 1; /* lateral extent across x */
+  double height = s->box[s->up];
+  double *x = malloc(sizeof(double) * 5 * (size_t)b);
+  if (!x) return wg_error(WG_ENOMEM, "run file", "no memory for profiles");
+  double *nd = x + b, *pf = x + 2 * b, *tg = x + 3 * b, *ncb = x + 4 * b;
+  double samples = pr->samples > 0 ? (double)pr->samples : NAN;
+  for (int k = 0; k < b; k++) {
+    x[k] = (k + 0.5) * width;
+    nd[k] = pr->count[k] / (samples * width * cross);
+    pf[k] = pr->volume[k] / (samples * width * cross * height);
+    double p2 = 0;
+    for (int a = 0; a < s->dim; a++) p2 += pr->mom[3 * k + a] * pr->mom[3 * k + a];
+    tg[k] = pr->count[k] > 0 ? (pr->mv2[k] - p2 / pr->mass[k]) / (pr->count[k] * s->dim) : NAN;
+    ncb[k] = pr->bridges[k] / (samples * width * cross);
+  }
+  hsize_t dims[1] = {(hsize_t)b};
+  int st = WG_OK;
+  st |= wg_h5_write(f, "/observables/profiles/x", H5T_NATIVE_DOUBLE, 1, dims, x, "d", "centre of each lateral bin along x");
+  st |= wg_h5_write(f, "/observables/profiles/number_density", H5T_NATIVE_DOUBLE, 1, dims, nd,
+                    "d^-(D-1)", "time-averaged particles per lateral area (projected along gravity)");
+  st |= wg_h5_write(f, "/observables/profiles/packing_fraction", H5T_NATIVE_DOUBLE, 1, dims, pf, "1",
+                    "time-averaged area (2D) or volume (3D) fraction of the bin's column between floor and lid");
+  st |= wg_h5_write(f, "/observables/profiles/temperature", H5T_NATIVE_DOUBLE, 1, dims, tg, "m g d",
+                    "granular temperature in the bin: sum m |v - V_bin|^2 / (count D), sums over all samples");
+  st |= wg_h5_write(f, "/observables/profiles/bridge_density", H5T_NATIVE_DOUBLE, 1, dims, ncb,
+                    "d^-(D-1)", "time-averaged capillary bridges per lateral area, n_cb (half a bridge per particle end)");
+  st |= wg_h5_attr_double(f, "/observables/profiles", "t_start", run->sc->profile_start);
+  st |= wg_h5_attr_llong(f, "/observables/profiles", "samples", pr->samples);
+  st |= wg_h5_attr_double(f, "/observables/profiles", "e_cb", run->sc->e_cb);
+  free(x);
+  return st;
+}
+
+/* Copy the snapshot frames from the scratch file into H5MD elements. */
+static int write_frames(wg_run *run, hid_t f)
+{
+  const wg_ed *s = &run->ed;
+  long n = s->n;
+  int dim = s->dim, st = WG_OK;
+  if (fflush(run->frames) != 0) return wg_error(WG_EIO, run->frames_path, "cannot flush");
+  FILE *in = fopen(run->frames_path, "rb");
+  if (!in) return wg_error(WG_EIO, run->frames_path, "cannot reopen: %s", strerror(errno));
+  wg_h5md_element pos, vel, nbr;
+  hsize_t fd[2] = {(hsize_t)n, (hsize_t)dim}, fb[1] = {(hsize_t)n};
+  hsize_t F = (hsize_t)run->nframes;
+  st |= wg_h5md_element_create(f, "/particles/all/position", H5T_NATIVE_DOUBLE, 2, fd, F, "d",
+                               "particle centres, wrapped into the box", &pos);
+  st |= wg_h5md_element_create(f, "/particles/all/velocity", H5T_NATIVE_DOUBLE, 2, fd, F, "sqrt(g d)",
+                               "particle velocities", &vel);
+  st |= wg_h5md_element_create(f, "/particles/all/bridge_count", H5T_NATIVE_UINT8, 1, fb, F, "1",
+                               "number of capillary bridges of each particle", &nbr);
+  long long total_bonds = 0;
+  for (long k = 0; k < run->nframes; k++) total_bonds += run->frame_bonds[k];
+  hsize_t bd[2] = {(hsize_t)total_bonds, 2}, od[1] = {F + 1};
+  hid_t pairs = wg_h5_dataset_create(f, "/bridges/pairs", H5T_NATIVE_INT32, 2, bd, "1",
+                                     "bridged pairs (i < j) of all snapshots, concatenated");
+  long long *offset = malloc(sizeof(long long) * (F + 1));
+  double *buf = malloc(sizeof(double) * (size_t)n * (size_t)dim);
+  uint8_t *cnt = malloc((size_t)n);
+  int32_t *pb = NULL;
+  if (pairs < 0 || !offset || !buf || !cnt) st = WG_EIO;
+  long long row = 0;
+  for (long k = 0; k < run->nframes && st == WG_OK; k++) {
+    long long step = k;
+    double t = run->frame_time[k];
+    if (fread(buf, sizeof(double), (size_t)n * dim, in) != (size_t)n * dim) st = WG_EIO;
+    if (st == WG_OK) st = wg_h5md_element_write(&pos, step, t, buf);
+    if (st == WG_OK && fread(buf, sizeof(double), (size_t)n * dim, in) != (size_t)n * dim) st = WG_EIO;
+    if (st == WG_OK) st = wg_h5md_element_write(&vel, step, t, buf);
+    if (st == WG_OK && fread(cnt, 1, (size_t)n, in) != (size_t)n) st = WG_EIO;
+    if (st == WG_OK) st = wg_h5md_element_write(&nbr, step, t, cnt);
+    long long nb = run->frame_bonds[k];
+    offset[k] = row;
+    if (st == WG_OK && nb > 0) {
+      int32_t *p = realloc(pb, sizeof(int32_t) * 2 * (size_t)nb);
+      if (!p) st = WG_ENOMEM;
+      else pb = p;
+      if (st == WG_OK && fread(pb, sizeof(int32_t), 2 * (size_t)nb, in) != 2 * (size_t)nb) st = WG_EIO;
+      if (st == WG_OK) st = wg_h5_write_rows(pairs, H5T_NATIVE_INT32, (hsize_t)row, (hsize_t)nb, pb);
+      row += nb;
+    }
+  }
+  if (offset) offset[F] = row;
+  if (st == WG_OK)
+    st = wg_h5_write(f, "/bridges/offset", H5T_NATIVE_LLONG, 1, od, offset, "1",
+                     "snapshot k's bridges are rows offset[k] .. offset[k+1]-1 of pairs");
+  hsize_t tdims[1] = {F};
+  if (st == WG_OK)
+    st = wg_h5_write(f, "/bridges/time", H5T_NATIVE_DOUBLE, 1, tdims, run->frame_time, "sqrt(d/g)",
+                     "time of each snapshot (as /particles/all/position/time)");
+  wg_h5md_element_close(&pos);
+  wg_h5md_element_close(&vel);
+  wg_h5md_element_close(&nbr);
+  if (pairs >= 0) H5Dclose(pairs);
+  free(offset);
+  free(buf);
+  free(cnt);
+  free(pb);
+  fclose(in);
+  if (st != WG_OK) return wg_error(WG_EIO, run->frames_path, "cannot copy the snapshots into the run file");
+  return WG_OK;
+}
+
+static int write_run_file(wg_run *run, double wall_s)
+{
+  wg_ed *s = &run->ed;
+  hid_t f = wg_h5_create(run->tmp_path);
+  if (f < 0) return WG_EIO;
+  int st = WG_OK;
+  st |= wg_h5md_header(f, "wetgran", "wetgran-run", wg_version());
+  const char *bound[3] = {"periodic", "periodic", "periodic"};
+  if (s->nwalls) bound[s->up] = "none";
+  st |= wg_h5md_box(f, "all", s->dim, s->box, bound);
+  double *buf = malloc(sizeof(double) * (size_t)s->n);
+  if (!buf) st = WG_ENOMEM;
+  hsize_t d1[1] = {(hsize_t)s->n};
+  for (long i = 0; st == WG_OK && i < s->n; i++) buf[i] = 2 * s->p[i].radius;
+  if (st == WG_OK) st = wg_h5_write(f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, 1, d1, buf, "d", "particle diameters");
+  for (long i = 0; st == WG_OK && i < s->n; i++) buf[i] = wg_ed_mass(s, i);
+  if (st == WG_OK) st = wg_h5_write(f, "/particles/all/mass", H5T_NATIVE_DOUBLE, 1, d1, buf, "m", "particle masses");
+  free(buf);
+  if (st == WG_OK) st = write_frames(run, f);
+  if (st == WG_OK) st = write_series(run, f);
+  if (st == WG_OK) st = write_profiles(run, f);
+  if (st == WG_OK) st = write_parameters(run, f);
+  if (st == WG_OK) st = write_provenance(run, f, wall_s);
+  if (st == WG_OK) {
+    hid_t g = wg_h5_group(f, "/summary");
+    if (g < 0) st = WG_EIO;
+    else {
+      double residual = run->rows ? run->series[(run->rows - 1) * NCOL + COL_RESIDUAL] : 0;
+      st |= wg_h5_attr_llong(g, ".", "events", (long long)wg_run_events(run));
+      st |= wg_h5_attr_double(g, ".", "sim_time", s->now);
+      st |= wg_h5_attr_double(g, ".", "ledger_residual", residual);
+      st |= wg_h5_attr_llong(g, ".", "collisions", (long long)s->counts.collisions);
+      st |= wg_h5_attr_llong(g, ".", "cell_crossings", (long long)s->counts.cell_crossings);
+      st |= wg_h5_attr_llong(g, ".", "wall_enters", (long long)s->counts.wall_enters);
+      st |= wg_h5_attr_llong(g, ".", "stale_predictions", (long long)s->counts.stale);
+      H5Gclose(g);
+    }
+  }
+  if (wg_h5_close(f) != WG_OK) st = WG_EIO;
+  if (st != WG_OK) return wg_error(WG_EIO, run->tmp_path, "run file not completed; nothing renamed");
+  if (rename(run->tmp_path, run->opt.out_path) != 0)
+    return wg_error(WG_EIO, run->opt.out_path, "cannot rename from %s: %s", run->tmp_path, strerror(errno));
+  return WG_OK;
+}
+
+/* ---------- driver ---------- */
+
+int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt)
+{
+  memset(run, 0, sizeof *run);
+  run->sc = sc;
+  run->opt = *opt;
+  if (sc->engine != WG_ENGINE_ED)
+    return wg_error(WG_EINVAL, sc->source, "key 'engine': only 'ed' is available in this version");
+  snprintf(run->tmp_path, sizeof run->tmp_path, "%s.tmp", opt->out_path);
+  snprintf(run->ckpt_path, sizeof run->ckpt_path, "%s.ckpt", opt->out_path);
+  snprintf(run->frames_path, sizeof run->frames_path, "%s.frames", opt->out_path);
+  int st = profile_alloc(&run->prof, sc->profile_bins);
+  if (st != WG_OK) return st;
+  run->wall_start = wall_clock();
+  if (!opt->fresh && access(run->ckpt_path, R_OK) == 0) {
+    char *want = scene_fingerprint(sc), have[1 << 15] = "";
+    hid_t f = wg_h5_open_read(run->ckpt_path);
+    if (f >= 0) {
+      wg_h5_read_attr_string(f, ".", "scene", have, sizeof have);
+      wg_h5_close(f);
+    }
+    int same = want && strcmp(want, have) == 0;
+    free(want);
+    if (!same)
+      return wg_error(WG_EINVAL, run->ckpt_path,
+                      "a checkpoint of a different configuration exists; remove it or run with --fresh");
+    st = checkpoint_load(run);
+    if (st != WG_OK) return st;
+    run->resumed = 1;
+    if (opt->progress) fprintf(stderr, "resuming from %s at t = %g\n", run->ckpt_path, run->ed.now);
+    return WG_OK;
+  }
+  st = wg_ed_alloc(&run->ed, sc);
+  if (st != WG_OK) return st;
+  run->frames = fopen(run->frames_path, "wb");
+  if (!run->frames) return wg_error(WG_EIO, run->frames_path, "cannot create: %s", strerror(errno));
+  return WG_OK;
+}
+
+static double next_time(const wg_run *run, int *what)
+{
+  const wg_scene *sc = run->sc;
+  double t = sc->t_end;
+  *what = 0;
+  double ts = run->k_series * sc->dt_series;
+  if (ts < t) t = ts;
+  if (sc->dt_snapshot > 0) {
+    double tf = run->k_snapshot * sc->dt_snapshot;
+    if (tf < t) t = tf;
+  }
+  if (sc->profile_bins > 0) {
+    double tp = sc->profile_start + run->k_profile * sc->dt_profile;
+    if (tp < t) t = tp;
+  }
+  if (sc->dt_checkpoint > 0) {
+    double tc = run->k_checkpoint * sc->dt_checkpoint;
+    if (tc < t) t = tc;
+  }
+  return t;
+}
+
+static void progress(wg_run *run, double *last)
+{
+  double now = wall_clock();
+  if (!run->opt.progress || now - *last < 1.0) return;
+  *last = now;
+  double el = now - run->wall_start;
+  fprintf(stderr, "\rt = %.6g / %g (%3.0f%%)  events %llu  %.3g events/s   ", run->ed.now,
+          run->sc->t_end, 100 * run->ed.now / run->sc->t_end, wg_run_events(run),
+          el > 0 ? (double)wg_run_events(run) / el : 0);
+}
+
+int wg_run_execute(wg_run *run)
+{
+  wg_scene *sc = run->sc;
+  wg_ed *s = &run->ed;
+  double last = wall_clock();
+  if (run->k_checkpoint == 0) run->k_checkpoint = 1;
+  int st = WG_OK;
+  for (;;) {
+    int what;
+    double t = next_time(run, &what);
+    st = wg_ed_advance(s, t);
+    if (st != WG_OK) break;
+    int final = t >= sc->t_end;
+    if (run->k_series * sc->dt_series <= t || final) {
+      st = sample_series(run);
+      run->k_series++;
+      while (run->k_series * sc->dt_series <= t) run->k_series++;
+    }
+    if (st == WG_OK && sc->profile_bins > 0 && sc->profile_start + run->k_profile * sc->dt_profile <= t) {
+      sample_profile(run);
+      run->k_profile++;
+    }
+    if (st == WG_OK && ((sc->dt_snapshot > 0 && run->k_snapshot * sc->dt_snapshot <= t) || final)) {
+      if (!(final && run->nframes > 0 && run->frame_time[run->nframes - 1] == t))
+        st = write_frame(run);
+      if (sc->dt_snapshot > 0)
+        while (run->k_snapshot * sc->dt_snapshot <= t) run->k_snapshot++;
+    }
+    if (st != WG_OK || final) break;
+    if (sc->dt_checkpoint > 0 && run->k_checkpoint * sc->dt_checkpoint <= t) {
+      while (run->k_checkpoint * sc->dt_checkpoint <= t) run->k_checkpoint++;
+      wg_ed_synchronize(s);
+      st = checkpoint_write(run);
+      if (st != WG_OK) break;
+      if (run->opt.abort_after_checkpoint > 0 &&
+          run->k_checkpoint - 1 >= run->opt.abort_after_checkpoint) {
+        fprintf(stderr, "wetgran-run: stopping after checkpoint at t = %g as asked\n", s->now);
+        return WG_ESTOPPED;
+      }
+    }
+    progress(run, &last);
+  }
+  if (run->opt.progress) fprintf(stderr, "\n");
+  if (st != WG_OK) return st;
+  double wall_s = wall_clock() - run->wall_start + run->wall_resumed;
+  st = write_run_file(run, wall_s);
+  if (st != WG_OK) return st;
+  fclose(run->frames);
+  run->frames = NULL;
+  remove(run->frames_path);
+  remove(run->ckpt_path);
+  double residual = run->rows ? run->series[(run->rows - 1) * NCOL + COL_RESIDUAL] : 0;
+  unsigned long long ev = wg_run_events(run);
+  struct rusage ru;
+  getrusage(RUSAGE_SELF, &ru);
+  fprintf(stderr,
+          "summary: events=%llu sim_time=%.10g wall_s=%.3f events_per_s=%.4g ledger_residual=%.3g"
+          " cell_crossings=%llu wall_enters=%llu peak_rss_kb=%ld engine_bytes_per_particle=%.0f\n",
+          ev, s->now, wall_s, wall_s > 0 ? (double)ev / wall_s : 0, residual,
+          s->counts.cell_crossings, s->counts.wall_enters, ru.ru_maxrss,
+          (double)wg_ed_bytes(s) / (double)s->n);
+  return WG_OK;
+}
+
+void wg_run_free(wg_run *run)
+{
+  if (run->frames) fclose(run->frames);
+  wg_ed_free(&run->ed);
+  free(run->series);
+  free(run->frame_time);
+  free(run->frame_bonds);
+  profile_free(&run->prof);
+  memset(run, 0, sizeof *run);
+}

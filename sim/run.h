@@ -1,0 +1,56 @@
+/* A run: the engine plus what a run file records — time series of observables and of the
+   energy ledger, time-averaged lateral profiles, particle snapshots — with checkpoints from
+   which an interrupted run resumes bit-identically, and the final H5MD file, written under a
+   temporary name and renamed when complete. */
+#ifndef WG_RUN_H
+#define WG_RUN_H
+
+#include <stdio.h>
+#include "ed.h"
+
+typedef struct wg_run_options {
+  const char *out_path;      /* RUN.h5 */
+  const char *command_line;  /* recorded in /provenance */
+  const char *scene_text;    /* contents of the scene file, recorded in /provenance */
+  int fresh;                 /* ignore an existing checkpoint */
+  int no_volatile;           /* write zeros / empty strings in /provenance/volatile */
+  int progress;              /* progress line on stderr (a terminal) */
+  int abort_after_checkpoint;/* testing aid: exit right after writing this many checkpoints */
+} wg_run_options;
+
+/* Profile accumulators per lateral bin along x. */
+typedef struct wg_profile {
+  int bins;
+  long samples;
+  double *count, *volume, *mass, *mom, *mv2, *bridges; /* mom: bins x 3 */
+} wg_profile;
+
+typedef struct wg_run {
+  wg_scene *sc;
+  wg_run_options opt;
+  wg_ed ed;
+  /* time series: one row per sample, columns as in the table in run.c */
+  size_t rows, cap;
+  double *series;
+  /* snapshots: frames go to a scratch file beside the output until the end */
+  FILE *frames;
+  long nframes;
+  double *frame_time;
+  long long *frame_bonds;
+  long long frames_bytes;
+  wg_profile prof;
+  /* next sampling times, as multiples of their intervals (exact, no accumulation) */
+  long long k_series, k_snapshot, k_profile, k_checkpoint;
+  double wall_start, wall_resumed; /* wall-clock bookkeeping (volatile) */
+  int resumed;
+  char tmp_path[4096], ckpt_path[4096], frames_path[4096];
+} wg_run;
+
+int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt);
+int wg_run_execute(wg_run *run);
+void wg_run_free(wg_run *run);
+
+/* Physical events so far: collisions, bridge ruptures and reflections, wall hits. */
+unsigned long long wg_run_events(const wg_run *run);
+
+#endif

@@ -1,0 +1,81 @@
+/* Scene files: plain "key = value" text, '#' starts a comment, one key per line.
+   Command-line "key=value" pairs override the file.  Every key is declared once in a
+   table (scene.c) with its type, range, default, unit and description; the same table
+   drives parsing, range checks, --help output and the /parameters group of a run file. */
+#ifndef WG_SCENE_H
+#define WG_SCENE_H
+
+#include <stdio.h>
+#include "wg.h"
+
+typedef enum { WG_ENGINE_ED = 0, WG_ENGINE_TD = 1 } wg_engine_kind;
+typedef enum { WG_CONTAINER_SHAKER = 0, WG_CONTAINER_PERIODIC = 1 } wg_container_kind;
+
+/* All lengths in mean diameters d, masses in m, times in sqrt(d/g), energies in m g d. */
+typedef struct wg_scene {
+  /* --- given keys (see the table in scene.c for defaults) --- */
+  int engine;          /* engine = ed | td */
+  int dim;             /* dim = 2 | 3 */
+  long n;              /* n: number of particles, >= 1 */
+  double lx;           /* lx: lateral box length along x [d] */
+  double ly;           /* ly: lateral box length along y [d] (3D only) */
+  double height;       /* height: bottom-to-lid distance H (shaker) or box length along z (periodic) [d] */
+  double phi;          /* phi: packing fraction; periodic container only, alternative to lx/ly/height (0 = not given) */
+  int container;       /* container = shaker | periodic */
+  double gravity;      /* gravity: g in units of g, 0 or 1 (default 1 for shaker, 0 for periodic) */
+  double sigma_p;      /* sigma_p: polydispersity, Eq. 2.22, 0 <= sigma_p < 1/sqrt(3) (default 0.06) */
+  int mass_scaling;    /* mass = unit | volume: m = 1 for all, or m = d^dim (default unit) */
+  double s_crit;       /* s_crit: rupture gap [d]; 0 = dry (default 0) */
+  double e_cb;         /* capillary bridge energy [m g d]; from exactly one of e_cb, e_cb_mgs, f_b */
+  double eps;          /* eps: particle restitution, 0 < eps <= 1 (default 1) */
+  double eps_wall;     /* eps_wall: wall restitution, 0 < eps_wall <= 1 (default 1) */
+  double tc;           /* tc: TC-model time [sqrt(d/g)] (default 1e-5) */
+  double gamma;        /* gamma: Gamma = A w^2 / g, Eq. 2.19 (shaker only) */
+  double estar;        /* estar: E* = m (A w)^2 / (2 E_cb), Eq. 2.18 (wet shaker) */
+  double estar_d;      /* estar_d: E*_d = (A w)^2 / (2 g d) (dry shaker) */
+  double tg_init;      /* tg_init: initial T_g / E_cb (wet runs; default 20) */
+  double tg_init_abs;  /* tg_init_abs: initial T_g [m g d] (dry runs, or instead of tg_init) */
+  unsigned long long seed; /* seed: RNG seed, required */
+  double t_end;        /* t_end: simulated time [sqrt(d/g)], required */
+  double dt_series;    /* dt_series: sampling interval of time series (default t_end/1000) */
+  double dt_snapshot;  /* dt_snapshot: interval of particle snapshots, 0 = final only (default 0) */
+  int profile_bins;    /* profile_bins: lateral bins along x for profiles, 0 = none (default 0) */
+  double profile_start;/* profile_start: time from which profiles are averaged (default t_end/2) */
+  double dt_profile;   /* dt_profile: sampling interval of profiles (default dt_series) */
+  double dt_checkpoint;/* dt_checkpoint: checkpoint interval, 0 = none (default t_end/10) */
+
+  /* --- derived by wg_scene_finish() --- */
+  double amplitude;    /* A [d]: from gamma and estar (or estar_d); 0 when not a shaker */
+  double omega;        /* w [sqrt(g/d)]; 0 when not a shaker */
+  double t_driv;       /* 2 pi / w; 0 when not a shaker */
+  double f_b;          /* F_B = E_cb / s_crit [m g]; 0 when dry */
+
+  /* bookkeeping of where each key came from, for error messages and provenance */
+  char source[256];    /* scene file path ("<none>" if only command-line pairs) */
+  int key_line[64];    /* per table entry: line in the file that set it, 0 = default, -1 = command line */
+} wg_scene;
+
+/* Defaults for every key; "unset" for required ones. */
+void wg_scene_init(wg_scene *sc);
+
+/* Read a scene file. Errors name the file, the line and the key:
+   "shake2d.ini:12: key 'gamma': value 'abc' is not a number". Returns WG_OK or WG_EINVAL/WG_EIO. */
+int wg_scene_read_file(wg_scene *sc, const char *path);
+
+/* Apply one command-line override "key=value"; errors name "command line" and the key. */
+int wg_scene_set_override(wg_scene *sc, const char *pair);
+
+/* Check required keys, ranges and consistency, and derive A, w, t_driv, f_b, e_cb.
+   Errors name the file (and line, where the key was set) and the key. */
+int wg_scene_finish(wg_scene *sc);
+
+/* Print the table of keys (name, unit, default, description) for --help. */
+void wg_scene_print_keys(FILE *out);
+
+/* Visit every key with its final value as text, in table order (for the /parameters
+   group of a run file and for provenance). */
+typedef int (*wg_scene_visit_fn)(void *user, const char *key, const char *value,
+                                 const char *unit, const char *description);
+int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user);
+
+#endif
