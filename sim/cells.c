@@ -3,6 +3,45 @@
 #include <math.h>
 #include <stdlib.h>
 
+static inline long flat(const wg_cells *c, const int *ix);
+static inline void unflat(const wg_cells *c, long cell, int *ix);
+
+/* Interior cells (stencil within the grid, no wrap) use fixed flat offsets; the rest take
+   the general path with wrapping and clipping. */
+static void precompute_stencils(wg_cells *c)
+{
+  long stride[3] = {1, c->nc[0], (long)c->nc[0] * c->nc[1]};
+  int lo[3], hi[3];
+  for (int a = 0; a < 3; a++) {
+    lo[a] = a < c->dim ? -1 : 0;
+    hi[a] = a < c->dim ? 1 : 0;
+  }
+  c->stencil_size = 0;
+  for (int dz = lo[2]; dz <= hi[2]; dz++)
+    for (int dy = lo[1]; dy <= hi[1]; dy++)
+      for (int dx = lo[0]; dx <= hi[0]; dx++)
+        c->stencil_offset[c->stencil_size++] = dx * stride[0] + dy * stride[1] + dz * stride[2];
+  for (int axis = 0; axis < c->dim; axis++)
+    for (int d = 0; d < 2; d++) {
+      int m = 0;
+      int flo[3] = {lo[0], lo[1], lo[2]}, fhi[3] = {hi[0], hi[1], hi[2]};
+      flo[axis] = fhi[axis] = d ? 1 : -1;
+      for (int dz = flo[2]; dz <= fhi[2]; dz++)
+        for (int dy = flo[1]; dy <= fhi[1]; dy++)
+          for (int dx = flo[0]; dx <= fhi[0]; dx++)
+            c->face_offset[axis][d][m++] = dx * stride[0] + dy * stride[1] + dz * stride[2];
+      c->face_size = m;
+    }
+  for (long k = 0; k < c->ncell; k++) {
+    int ix[3];
+    unflat(c, k, ix);
+    int in = 1;
+    for (int a = 0; a < c->dim; a++)
+      if (ix[a] < 1 || ix[a] > c->nc[a] - 2) in = 0;
+    c->interior[k] = (uint8_t)in;
+  }
+}
+
 int wg_cells_alloc(wg_cells *c, int dim, const double *lo, const double *len,
                    const int *periodic, double range, long n)
 {
@@ -28,21 +67,24 @@ int wg_cells_alloc(wg_cells *c, int dim, const double *lo, const double *len,
     c->ncell *= k;
   }
   c->head = malloc(sizeof *c->head * (size_t)c->ncell);
+  c->interior = malloc((size_t)c->ncell);
   c->next = malloc(sizeof *c->next * (size_t)n);
   c->prev = malloc(sizeof *c->prev * (size_t)n);
   c->cell = malloc(sizeof *c->cell * (size_t)n);
-  if (!c->head || !c->next || !c->prev || !c->cell) {
+  if (!c->head || !c->next || !c->prev || !c->cell || !c->interior) {
     wg_cells_free(c);
     return wg_error(WG_ENOMEM, "cells", "cannot allocate %ld cells for %ld particles", c->ncell, n);
   }
   for (long k = 0; k < c->ncell; k++) c->head[k] = -1;
+  precompute_stencils(c);
   return WG_OK;
 }
 
 void wg_cells_free(wg_cells *c)
 {
-  free(c->head); free(c->next); free(c->prev); free(c->cell);
+  free(c->head); free(c->next); free(c->prev); free(c->cell); free(c->interior);
   c->head = c->next = c->prev = c->cell = NULL;
+  c->interior = NULL;
 }
 
 static inline long flat(const wg_cells *c, const int *ix)
@@ -132,7 +174,7 @@ static int block(const wg_cells *c, const int *ix, const int *lo_off, const int 
   return m;
 }
 
-int wg_cells_stencil(const wg_cells *c, long cell, long *out)
+int wg_cells_stencil_general(const wg_cells *c, long cell, long *out)
 {
   int ix[3], lo_off[3], hi_off[3];
   unflat(c, cell, ix);
@@ -143,7 +185,7 @@ int wg_cells_stencil(const wg_cells *c, long cell, long *out)
   return block(c, ix, lo_off, hi_off, out);
 }
 
-int wg_cells_face(const wg_cells *c, long cell, int axis, int dir, long *out)
+int wg_cells_face_general(const wg_cells *c, long cell, int axis, int dir, long *out)
 {
   int ix[3], lo_off[3], hi_off[3];
   unflat(c, cell, ix);

@@ -17,6 +17,11 @@ typedef struct wg_cells {
   int32_t *head;      /* first particle of each cell, -1 when empty */
   int32_t *next, *prev; /* lists through the particles */
   int32_t *cell;      /* cell of each particle */
+  uint8_t *interior;  /* 1 where the whole stencil lies inside the grid without wrapping */
+  long stencil_offset[27]; /* flat offsets of the stencil of an interior cell */
+  int stencil_size;
+  long face_offset[3][2][9]; /* [axis][dir > 0] flat offsets of the face layer */
+  int face_size;
 } wg_cells;
 
 /* The grid over [lo, lo + len) with cells of width >= range; periodic axes need >= 3 cells. */
@@ -37,10 +42,23 @@ long wg_cells_step(const wg_cells *c, long cell, int axis, int dir, int *wrapped
 
 /* The 3^dim cells around a cell (itself included, duplicates and out-of-grid cells left
    out); returns their number. */
-int wg_cells_stencil(const wg_cells *c, long cell, long *out);
+int wg_cells_stencil_general(const wg_cells *c, long cell, long *out);
+static inline int wg_cells_stencil(const wg_cells *c, long cell, long *out)
+{
+  if (!c->interior[cell]) return wg_cells_stencil_general(c, cell, out);
+  for (int k = 0; k < c->stencil_size; k++) out[k] = cell + c->stencil_offset[k];
+  return c->stencil_size;
+}
 /* The 3^(dim-1) cells of the stencil's face one layer beyond cell along axis/dir: the cells
    that join the stencil when a particle has just stepped into `cell` moving along axis/dir. */
-int wg_cells_face(const wg_cells *c, long cell, int axis, int dir, long *out);
+int wg_cells_face_general(const wg_cells *c, long cell, int axis, int dir, long *out);
+static inline int wg_cells_face(const wg_cells *c, long cell, int axis, int dir, long *out)
+{
+  if (!c->interior[cell]) return wg_cells_face_general(c, cell, axis, dir, out);
+  const long *off = c->face_offset[axis][dir > 0];
+  for (int k = 0; k < c->face_size; k++) out[k] = cell + off[k];
+  return c->face_size;
+}
 
 /* Time, counted from the particle's reference point r, v (gravity g along -axis dim-1), at
    which it leaves `cell`, not earlier than tau_now; *axis and *dir tell through which face.

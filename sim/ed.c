@@ -77,7 +77,7 @@ void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v)
 /* Separation dr = r_j - r_i (minimum image) and relative velocity dv = v_j - v_i at the
    later of the two local times, which is returned.  Gravity drops out of relative motion
    except through the different local times. */
-static double pair_state(const wg_ed *s, long i, long j, double *dr, double *dv)
+static inline double pair_state(const wg_ed *s, long i, long j, double *dr, double *dv)
 {
   const wg_particle *a = &s->p[i], *b = &s->p[j];
   double t = a->t > b->t ? a->t : b->t;
@@ -156,7 +156,7 @@ static inline void consider(candidate *best, double t, int type, long partner)
 /* Earliest event of pair (i, j): hard-core contact while approaching (Eq. B.3), or, for a
    bonded pair, the moment the gap reaches s_crit.  Overlapping pairs that approach collide
    at once; overlapping pairs that separate are left alone (App. B.5.6). */
-static void predict_pair(const wg_ed *s, long i, long j, candidate *best)
+static inline void predict_pair(const wg_ed *s, long i, long j, candidate *best)
 {
   double dr[3], dv[3];
   double t0 = pair_state(s, i, j, dr, dv);

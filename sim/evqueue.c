@@ -37,8 +37,12 @@ void wg_evqueue_build(wg_evqueue *q)
     q->node[k] = earlier(q->key, q->node[2 * k], q->node[2 * k + 1]);
 }
 
+/* Once a node keeps a winner other than i, nothing above it can change. */
 void wg_evqueue_update(wg_evqueue *q, long i)
 {
-  for (long k = (q->size + i) / 2; k >= 1; k /= 2)
-    q->node[k] = earlier(q->key, q->node[2 * k], q->node[2 * k + 1]);
+  for (long k = (q->size + i) / 2; k >= 1; k /= 2) {
+    int32_t w = earlier(q->key, q->node[2 * k], q->node[2 * k + 1]);
+    if (w == q->node[k] && w != i) break;
+    q->node[k] = w;
+  }
 }

@@ -1,0 +1,92 @@
+/* The engine at the walls: a particle resting on a floor shaken below Gamma = 1 stays on it;
+   a shaker at Gamma = 1000 keeps every particle inside and closes its energy ledger. */
+#include <math.h>
+#include <stdio.h>
+
+#include "ed.h"
+#include "tharness.h"
+
+static int scene(wg_scene *sc, const char *const *keys)
+{
+  wg_scene_init(sc);
+  for (int k = 0; keys[k]; k++)
+    if (wg_scene_set_override(sc, keys[k]) != WG_OK) return 1;
+  return wg_scene_finish(sc) != WG_OK;
+}
+
+/* Largest gap between any particle and the floor or lid (negative: overlap) at time now. */
+static void wall_gaps(const wg_ed *s, double *worst_overlap, double *max_floor_gap)
+{
+  *worst_overlap = 0;
+  *max_floor_gap = -INFINITY;
+  for (long i = 0; i < s->n; i++) {
+    double r[3], v[3];
+    wg_ed_position_at(s, i, s->now, r, v);
+    double R = s->p[i].radius;
+    double floor_gap = r[s->up] - R - wg_wall_position(&s->wall[0], s->now);
+    double lid_gap = wg_wall_position(&s->wall[1], s->now) - r[s->up] - R;
+    if (floor_gap < *worst_overlap) *worst_overlap = floor_gap;
+    if (lid_gap < *worst_overlap) *worst_overlap = lid_gap;
+    if (floor_gap > *max_floor_gap) *max_floor_gap = floor_gap;
+  }
+}
+
+static void resting_below_gamma_one(void)
+{
+  const char *keys[] = {"dim=2", "n=1", "lx=10", "height=5", "sigma_p=0", "gamma=0.8",
+                        "estar_d=0.01", "tc=1e-4", "tg_init_abs=0", "seed=1", "t_end=100", NULL};
+  wg_scene sc;
+  TH_CHECK(scene(&sc, keys) == 0, "Gamma = 0.8 scene accepted");
+  /* on the floor at t = 0 (floor at z = 0, moving up with A w) */
+  double r[2] = {5, 0.5}, v[2] = {0, sc.amplitude * sc.omega}, rad[1] = {0.5};
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc_state(&s, &sc, 1, r, v, rad, NULL, 0) == WG_OK, "state set up");
+  double overlap = 0, highest = 0;
+  int st = WG_OK;
+  for (int k = 1; k <= 400 && st == WG_OK; k++) {
+    st = wg_ed_advance(&s, k * sc.t_driv / 20);
+    double o, h;
+    wall_gaps(&s, &o, &h);
+    if (o < overlap) overlap = o;
+    if (h > highest) highest = h;
+  }
+  TH_CHECK(st == WG_OK, "20 periods run (%llu wall contacts)", s.counts.wall_hits);
+  TH_CHECK(highest < 1e-6, "the particle stays on the floor: highest gap %.2e < 1e-6 d", highest);
+  TH_CHECK(overlap > -1e-12, "it never sinks into the floor: worst overlap %.2e", overlap);
+  double res = wg_ed_ledger_residual(&s);
+  TH_CHECK(res < 1e-9, "ledger closes (%.2e)", res);
+  wg_ed_free(&s);
+}
+
+static void gamma_thousand(void)
+{
+  const char *keys[] = {"dim=2", "n=200", "lx=50", "height=12", "s_crit=0.0711", "f_b=4",
+                        "eps=0.9", "gamma=1000", "estar=50", "seed=2", "t_end=20", NULL};
+  wg_scene sc;
+  TH_CHECK(scene(&sc, keys) == 0, "Gamma = 1000 scene accepted (A = %.3g d, w = %.4g)",
+           sc.amplitude, sc.omega);
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc(&s, &sc) == WG_OK, "set up");
+  double overlap = 0, worst = 0, highest;
+  int st = WG_OK;
+  for (int k = 1; k <= 200 && st == WG_OK; k++) {
+    st = wg_ed_advance(&s, k * sc.t_end / 200);
+    double o;
+    wall_gaps(&s, &o, &highest);
+    if (o < overlap) overlap = o;
+    double res = wg_ed_ledger_residual(&s);
+    if (res > worst) worst = res;
+  }
+  TH_CHECK(st == WG_OK && s.counts.wall_hits > 500, "run completes (%llu wall hits, %llu collisions)",
+           s.counts.wall_hits, s.counts.collisions);
+  TH_CHECK(overlap > -1e-9, "no particle leaves the container: worst wall overlap %.2e", overlap);
+  TH_CHECK(worst < 1e-9, "ledger residual %.2e < 1e-9", worst);
+  wg_ed_free(&s);
+}
+
+int main(void)
+{
+  resting_below_gamma_one();
+  gamma_thousand();
+  return th_summary();
+}
