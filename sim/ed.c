@@ -18,6 +18,14 @@ enum { BOND_CAP_2D = 8, BOND_CAP_3D = 16 };
 
 /* ---------- small helpers ---------- */
 
+static void *zalloc(size_t n, size_t size, int *fail)
+{
+  void *p = calloc(n ? n : 1, size);
+  if (!p) *fail = 1;
+  return p;
+}
+
+
 double wg_ksum_value(const wg_ksum *k) { return k->s + k->c; }
 
 /* Neumaier's compensated sum: value = s + c. */
@@ -252,16 +260,36 @@ static void predict_all(wg_ed *s, long i, int reschedule)
 
 /* ---------- events ---------- */
 
-/* Contact of two hard particles with restitution (Eq. 2.3-2.6 for any masses):
-   dv_i = (1 + e) mu/m_i (u.n) n.  The TC model makes the collision elastic when either
-   particle collided less than tc ago.  An unbonded wet pair forms a bridge. */
-static int collide(wg_ed *s, long i, long j)
+/* Unit vector n from i to j at the current time and the normal relative velocity
+   u_n = (v_j - v_i).n (negative while approaching); *dist is |r_j - r_i|. */
+static double contact_normal(const wg_ed *s, long i, long j, double *n, double *dist)
 {
   double dr[3], dv[3];
   pair_state(s, i, j, dr, dv);
-  double dist = sqrt(dot(dr, dr, s->dim));
-  double n[3] = {dr[0] / dist, dr[1] / dist, s->dim == 3 ? dr[2] / dist : 0};
-  double un = dot(dv, n, s->dim);
+  *dist = sqrt(dot(dr, dr, s->dim));
+  for (int k = 0; k < 3; k++) n[k] = k < s->dim ? dr[k] / *dist : 0;
+  return dot(dv, n, s->dim);
+}
+
+/* Change the normal relative velocity by du, conserving momentum:
+   dv_i = -mu/m_i du n, dv_j = +mu/m_j du n. */
+static void normal_kick(wg_ed *s, long i, long j, const double *n, double du)
+{
+  double mu = reduced_mass(s, i, j);
+  double ki = mu * du / wg_ed_mass(s, i), kj = mu * du / wg_ed_mass(s, j);
+  for (int k = 0; k < s->dim; k++) {
+    s->p[i].v[k] -= ki * n[k];
+    s->p[j].v[k] += kj * n[k];
+  }
+}
+
+/* Contact of two hard particles with restitution (Eq. 2.3-2.6 for any masses):
+   u_n -> -e u_n.  The TC model makes the collision elastic when either particle collided
+   less than tc ago.  An unbonded wet pair forms a bridge. */
+static int collide(wg_ed *s, long i, long j)
+{
+  double n[3], dist;
+  double un = contact_normal(s, i, j, n, &dist);
   if (un >= 0) return WG_OK; /* already separating: nothing to do */
   double e = s->eps;
   if (s->t_last) {
@@ -269,13 +297,8 @@ static int collide(wg_ed *s, long i, long j)
     s->t_last[i] = s->t_last[j] = s->now;
   }
   double mu = reduced_mass(s, i, j);
-  double J = (1 + e) * mu * un;
-  double ki = J / wg_ed_mass(s, i), kj = J / wg_ed_mass(s, j);
-  for (int k = 0; k < s->dim; k++) {
-    s->p[i].v[k] += ki * n[k];
-    s->p[j].v[k] -= kj * n[k];
-  }
-  s->virial -= dist * J;
+  normal_kick(s, i, j, n, -(1 + e) * un);
+  s->virial -= dist * (1 + e) * mu * un; /* sigma |J| */
   if (e < 1) ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
   s->counts.collisions++;
   if (s->wet && !wg_ed_bonded(s, i, j)) {
@@ -292,11 +315,8 @@ static int collide(wg_ed *s, long i, long j)
    reflected back into the well without loss. */
 static void bridge_edge(wg_ed *s, long i, long j)
 {
-  double dr[3], dv[3];
-  pair_state(s, i, j, dr, dv);
-  double dist = sqrt(dot(dr, dr, s->dim));
-  double n[3] = {dr[0] / dist, dr[1] / dist, s->dim == 3 ? dr[2] / dist : 0};
-  double un = dot(dv, n, s->dim);
+  double n[3], dist;
+  double un = contact_normal(s, i, j, n, &dist);
   if (un <= 0) return;
   double mu = reduced_mass(s, i, j);
   double un_after;
@@ -310,12 +330,7 @@ static void bridge_edge(wg_ed *s, long i, long j)
     un_after = -un;
     s->counts.reflections++;
   }
-  double du = un_after - un;
-  double ki = mu * du / wg_ed_mass(s, i), kj = mu * du / wg_ed_mass(s, j);
-  for (int k = 0; k < s->dim; k++) {
-    s->p[i].v[k] -= ki * n[k];
-    s->p[j].v[k] += kj * n[k];
-  }
+  normal_kick(s, i, j, n, un_after - un);
 }
 
 /* Reflection at a moving wall: the velocity relative to the wall reverses and shrinks by
@@ -435,12 +450,67 @@ int wg_ed_advance(wg_ed *s, double t_stop)
       int st = physical_event(s, i);
       if (st != WG_OK) return st;
     }
+    if (++s->since_sync >= s->sync_interval) {
+      int st = wg_ed_synchronize(s);
+      if (st != WG_OK) return st;
+    }
   }
   s->now = t_stop;
   return WG_OK;
 }
 
-void wg_ed_synchronize(wg_ed *s)
+/* Renumber the slots in the order of the cells (a counting sort, stable, so an ordered
+   state stays as it is).  Every per-particle array moves along; bond partners are
+   translated.  Scratch memory is taken here, outside the event loop. */
+static int renumber_by_cell(wg_ed *s)
+{
+  long n = s->n;
+  int fail = 0;
+  long *start = zalloc((size_t)s->cells.ncell + 1, sizeof *start, &fail);
+  int32_t *order = zalloc((size_t)n, sizeof *order, &fail);  /* order[new] = old */
+  int32_t *to = zalloc((size_t)n, sizeof *to, &fail);        /* to[old] = new */
+  wg_particle *p = zalloc((size_t)n, sizeof *p, &fail);
+  double *d = zalloc((size_t)n, sizeof *d, &fail);
+  int32_t *b = s->wet ? zalloc((size_t)n * s->bond_cap, sizeof *b, &fail) : NULL;
+  uint8_t *nb = s->wet ? zalloc((size_t)n, sizeof *nb, &fail) : NULL;
+  if (fail) {
+    free(start); free(order); free(to); free(p); free(d); free(b); free(nb);
+    return wg_error(WG_ENOMEM, "engine", "no memory to renumber %ld particles", n);
+  }
+  for (long i = 0; i < n; i++) start[wg_cells_locate(&s->cells, s->p[i].r) + 1]++;
+  for (long c = 0; c < s->cells.ncell; c++) start[c + 1] += start[c];
+  for (long i = 0; i < n; i++) {
+    long k = start[wg_cells_locate(&s->cells, s->p[i].r)]++;
+    order[k] = (int32_t)i;
+    to[i] = (int32_t)k;
+  }
+  for (long k = 0; k < n; k++) p[k] = s->p[order[k]];
+  memcpy(s->p, p, sizeof *p * (size_t)n);
+  for (long k = 0; k < n; k++) s->slot[k] = s->id[order[k]];
+  memcpy(s->id, s->slot, sizeof *s->id * (size_t)n);
+  for (long k = 0; k < n; k++) s->slot[s->id[k]] = (int32_t)k;
+  if (s->mass) {
+    for (long k = 0; k < n; k++) d[k] = s->mass[order[k]];
+    memcpy(s->mass, d, sizeof *d * (size_t)n);
+  }
+  if (s->t_last) {
+    for (long k = 0; k < n; k++) d[k] = s->t_last[order[k]];
+    memcpy(s->t_last, d, sizeof *d * (size_t)n);
+  }
+  if (s->wet) {
+    for (long k = 0; k < n; k++) {
+      nb[k] = s->nbond[order[k]];
+      for (int m = 0; m < nb[k]; m++)
+        b[(size_t)k * s->bond_cap + m] = to[s->bond[(size_t)order[k] * s->bond_cap + m]];
+    }
+    memcpy(s->nbond, nb, (size_t)n);
+    memcpy(s->bond, b, sizeof *b * (size_t)n * s->bond_cap);
+  }
+  free(start); free(order); free(to); free(p); free(d); free(b); free(nb);
+  return WG_OK;
+}
+
+int wg_ed_synchronize(wg_ed *s)
 {
   for (long i = 0; i < s->n; i++) {
     advance(s, i, s->now);
@@ -451,12 +521,16 @@ void wg_ed_synchronize(wg_ed *s)
       }
     s->count[i] = 0;
   }
+  int st = renumber_by_cell(s);
+  if (st != WG_OK) return st;
   wg_cells_rebuild(&s->cells, s->n, s->p[0].r, sizeof(wg_particle) / sizeof(double));
   for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
   for (long i = 0; i < s->n; i++)
     s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
   wg_evqueue_build(&s->queue);
   s->zero_time_run = 0;
+  s->since_sync = 0;
+  return WG_OK;
 }
 
 /* ---------- energy ---------- */
@@ -492,13 +566,6 @@ double wg_ed_ledger_residual(wg_ed *s)
 
 /* ---------- set-up ---------- */
 
-static void *zalloc(size_t n, size_t size, int *fail)
-{
-  void *p = calloc(n ? n : 1, size);
-  if (!p) *fail = 1;
-  return p;
-}
-
 static int setup_common(wg_ed *s, const wg_scene *sc, long n)
 {
   memset(s, 0, sizeof *s);
@@ -531,6 +598,8 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
 
   int fail = 0;
   s->p = zalloc((size_t)n, sizeof *s->p, &fail);
+  s->id = zalloc((size_t)n, sizeof *s->id, &fail);
+  s->slot = zalloc((size_t)n, sizeof *s->slot, &fail);
   s->count = zalloc((size_t)n, sizeof *s->count, &fail);
   s->t_phys = zalloc((size_t)n, sizeof *s->t_phys, &fail);
   s->ev_partner = zalloc((size_t)n, sizeof *s->ev_partner, &fail);
@@ -550,6 +619,8 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
     wg_ed_free(s);
     return wg_error(WG_ENOMEM, "engine", "cannot allocate the state of %ld particles", n);
   }
+  for (long i = 0; i < n; i++) s->id[i] = s->slot[i] = (int32_t)i;
+  s->sync_interval = 16ULL * (unsigned long long)n;
   if (s->t_last)
     for (long i = 0; i < n; i++) s->t_last[i] = -INFINITY;
   s->cells.head = NULL;
@@ -586,7 +657,8 @@ int wg_ed_start(wg_ed *s, double t0)
   int st = setup_cells(s);
   if (st != WG_OK) return st;
   s->now = t0;
-  wg_ed_synchronize(s);
+  st = wg_ed_synchronize(s);
+  if (st != WG_OK) return st;
   double ek, ep;
   wg_ed_energy(s, &ek, &ep);
   s->ledger.e0 = ek + ep;
@@ -627,7 +699,8 @@ size_t wg_ed_bytes(const wg_ed *s)
   size_t n = (size_t)s->n;
   size_t per = sizeof *s->p + sizeof *s->count + sizeof *s->t_phys + sizeof *s->ev_partner +
                sizeof *s->ev_count + sizeof *s->ev_type + sizeof *s->t_cell + sizeof *s->cell_axis +
-               sizeof *s->cell_dir + sizeof *s->key + 3 * sizeof(int32_t) /* cell lists */;
+               sizeof *s->cell_dir + sizeof *s->key + 3 * sizeof(int32_t) /* cell lists */ +
+               2 * sizeof(int32_t) /* id, slot */;
   size_t bytes = n * per + 2 * (size_t)s->queue.size * sizeof(int32_t) +
                  (size_t)s->cells.ncell * sizeof(int32_t);
   if (s->mass) bytes += n * sizeof *s->mass;
@@ -638,7 +711,7 @@ size_t wg_ed_bytes(const wg_ed *s)
 
 void wg_ed_free(wg_ed *s)
 {
-  free(s->p); free(s->count); free(s->t_phys); free(s->ev_partner); free(s->ev_count);
+  free(s->p); free(s->id); free(s->slot); free(s->count); free(s->t_phys); free(s->ev_partner); free(s->ev_count);
   free(s->ev_type); free(s->t_cell); free(s->cell_axis); free(s->cell_dir); free(s->key);
   free(s->mass); free(s->t_last); free(s->bond); free(s->nbond);
   wg_cells_free(&s->cells);

@@ -62,7 +62,11 @@ typedef struct wg_ed {
   double eps, eps_wall, tc;
   double wall_min_speed;       /* least speed of a particle leaving a wall (see wall_collide) */
 
+  /* Particles are stored in slots, renumbered in cell order at every synchronisation so that
+     neighbours sit close in memory; id[slot] is the particle's fixed identity (input order,
+     output order), slot[id] its current slot. */
   wg_particle *p;
+  int32_t *id, *slot;
   double *mass;                /* NULL: every mass is 1 */
   uint32_t *count;             /* trajectory changes of each particle (validates predictions) */
   double *t_last;              /* time of the last collision (TC model); NULL when elastic */
@@ -86,6 +90,8 @@ typedef struct wg_ed {
   double virial;               /* sum over collisions of sigma_ij |J| (pressure, Eq. of state) */
   wg_wall_stats wall_stats;
   unsigned long long zero_time_run; /* consecutive events at the same instant (stuck guard) */
+  unsigned long long since_sync;    /* events since the last synchronisation */
+  unsigned long long sync_interval; /* synchronise (and renumber) after this many events */
 } wg_ed;
 
 /* Set up from a finished scene: allocate, place particles on a lattice with Gaussian
@@ -93,7 +99,7 @@ typedef struct wg_ed {
 int wg_ed_alloc(wg_ed *s, const wg_scene *sc);
 void wg_ed_free(wg_ed *s);
 
-/* Build with given particle state (positions, velocities, radii, local times all equal to
+/* Build with given particle state (particle k of the arrays gets identity k) (positions, velocities, radii, local times all equal to
    t0) instead of the lattice: used by tests and checkpoint resume.  Radii and, if non-NULL,
    masses are copied. */
 int wg_ed_alloc_state(wg_ed *s, const wg_scene *sc, long n, const double *r, const double *v,
@@ -109,13 +115,19 @@ int wg_ed_start(wg_ed *s, double t0);
 /* Process events until the next one would lie beyond t_stop; then now = t_stop. */
 int wg_ed_advance(wg_ed *s, double t_stop);
 
-/* Bring every particle to time now, wrap positions into the box, rebuild the cells from
-   positions and predict every event afresh.  The state after this depends only on the
-   particle states, so a checkpointed run resumes bit-identically. */
-void wg_ed_synchronize(wg_ed *s);
+/* Bring every particle to time now, wrap positions into the box, renumber the slots in cell
+   order, rebuild the cells and predict every event afresh.  The state after this depends
+   only on the particle states, so a checkpointed run resumes bit-identically.  Runs also do
+   this every sync_interval events (16 N), to keep neighbours close in memory. */
+int wg_ed_synchronize(wg_ed *s);
 
-/* Position and velocity of particle i extrapolated to time t (no state change). */
+/* Position and velocity of the particle in slot i extrapolated to time t (no state change). */
 void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v);
+/* The same for the particle with identity id (input and output order). */
+static inline void wg_ed_position_of(const wg_ed *s, long id, double t, double *r, double *v)
+{
+  wg_ed_position_at(s, s->slot[id], t, r, v);
+}
 
 static inline double wg_ed_mass(const wg_ed *s, long i) { return s->mass ? s->mass[i] : 1.0; }
 

@@ -168,28 +168,30 @@ static int write_frame(wg_run *run)
   wg_ed *s = &run->ed;
   long long nb = 0;
   size_t bytes = 0;
-  for (long i = 0; i < s->n; i++) {
+  for (long id = 0; id < s->n; id++) {
     double r[3], v[3];
-    wg_ed_position_at(s, i, s->now, r, v);
+    wg_ed_position_of(s, id, s->now, r, v);
     bytes += fwrite(r, sizeof(double), (size_t)s->dim, run->frames) * sizeof(double);
   }
-  for (long i = 0; i < s->n; i++) {
+  for (long id = 0; id < s->n; id++) {
     double r[3], v[3];
-    wg_ed_position_at(s, i, s->now, r, v);
+    wg_ed_position_of(s, id, s->now, r, v);
     bytes += fwrite(v, sizeof(double), (size_t)s->dim, run->frames) * sizeof(double);
   }
-  for (long i = 0; i < s->n; i++) {
-    uint8_t c = s->wet ? s->nbond[i] : 0;
+  for (long id = 0; id < s->n; id++) {
+    uint8_t c = s->wet ? s->nbond[s->slot[id]] : 0;
     bytes += fwrite(&c, 1, 1, run->frames);
   }
   if (s->wet)
-    for (long i = 0; i < s->n; i++)
+    for (long id = 0; id < s->n; id++) {
+      long i = s->slot[id];
       for (int k = 0; k < s->nbond[i]; k++) {
-        int32_t pair[2] = {(int32_t)i, s->bond[(size_t)i * s->bond_cap + k]};
-        if (pair[1] < i) continue;
+        int32_t pair[2] = {(int32_t)id, s->id[s->bond[(size_t)i * s->bond_cap + k]]};
+        if (pair[1] < id) continue;
         bytes += fwrite(pair, sizeof(int32_t), 2, run->frames) * sizeof(int32_t);
         nb++;
       }
+    }
   size_t expect = (size_t)s->n * (2 * s->dim * sizeof(double) + 1) + (size_t)nb * 8;
   if (bytes != expect || fflush(run->frames) != 0)
     return wg_error(WG_EIO, run->frames_path, "cannot write snapshot %ld: %s", run->nframes,
@@ -232,6 +234,7 @@ static int checkpoint_write(wg_run *run)
   st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, buf, "sqrt(g d)", "velocities");
   for (long i = 0; i < n; i++) buf[i] = s->p[i].radius;
   st |= wg_h5_write(f, "state/radius", H5T_NATIVE_DOUBLE, 1, d1, buf, "d", "radii");
+  st |= wg_h5_write(f, "state/id", H5T_NATIVE_INT32, 1, d1, s->id, "1", "identity of the particle in each slot");
   free(buf);
   if (s->mass) st |= wg_h5_write(f, "state/mass", H5T_NATIVE_DOUBLE, 1, d1, s->mass, "m", "masses");
   if (s->t_last)
@@ -337,6 +340,11 @@ static int checkpoint_load(wg_run *run)
     s->p[i].t = now;
   }
   free(buf);
+  if (st == WG_OK) st = read_into(f, ck, "state/id", H5T_NATIVE_INT32, s->id, (hsize_t)n);
+  for (long i = 0; st == WG_OK && i < n; i++) {
+    if (s->id[i] < 0 || s->id[i] >= n) st = WG_EIO;
+    else s->slot[s->id[i]] = (int32_t)i;
+  }
   if (st == WG_OK && s->mass) st = read_into(f, ck, "state/mass", H5T_NATIVE_DOUBLE, s->mass, (hsize_t)n);
   if (st == WG_OK && s->t_last) st = read_into(f, ck, "state/t_last", H5T_NATIVE_DOUBLE, s->t_last, (hsize_t)n);
   if (st == WG_OK && s->wet) {
@@ -645,9 +653,9 @@ static int write_run_file(wg_run *run, double wall_s)
   double *buf = malloc(sizeof(double) * (size_t)s->n);
   if (!buf) st = WG_ENOMEM;
   hsize_t d1[1] = {(hsize_t)s->n};
-  for (long i = 0; st == WG_OK && i < s->n; i++) buf[i] = 2 * s->p[i].radius;
+  for (long id = 0; st == WG_OK && id < s->n; id++) buf[id] = 2 * s->p[s->slot[id]].radius;
   if (st == WG_OK) st = wg_h5_write(f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, 1, d1, buf, "d", "particle diameters");
-  for (long i = 0; st == WG_OK && i < s->n; i++) buf[i] = wg_ed_mass(s, i);
+  for (long id = 0; st == WG_OK && id < s->n; id++) buf[id] = wg_ed_mass(s, s->slot[id]);
   if (st == WG_OK) st = wg_h5_write(f, "/particles/all/mass", H5T_NATIVE_DOUBLE, 1, d1, buf, "m", "particle masses");
   free(buf);
   if (st == WG_OK) st = write_frames(run, f);
@@ -781,8 +789,8 @@ int wg_run_execute(wg_run *run)
     if (st != WG_OK || final) break;
     if (sc->dt_checkpoint > 0 && run->k_checkpoint * sc->dt_checkpoint <= t) {
       while (run->k_checkpoint * sc->dt_checkpoint <= t) run->k_checkpoint++;
-      wg_ed_synchronize(s);
-      st = checkpoint_write(run);
+      st = wg_ed_synchronize(s);
+      if (st == WG_OK) st = checkpoint_write(run);
       if (st != WG_OK) break;
       if (run->opt.abort_after_checkpoint > 0 &&
           run->k_checkpoint - 1 >= run->opt.abort_after_checkpoint) {

@@ -40,7 +40,7 @@ static void head_on_elastic(void)
   wg_ed_advance(&s, 1.000001);
   TH_CHECK(s.counts.collisions == 1, "one collision at t = 1");
   double rr[2], vv[2];
-  wg_ed_position_at(&s, 0, 1.5, rr, vv);
+  wg_ed_position_of(&s, 0, 1.5, rr, vv);
   TH_CLOSE("velocity of 0 after: reversed", vv[0], -1.0, 1e-15, 0);
   TH_CLOSE("position of 0 at t = 1.5", rr[0], 6.0 - 0.5, 1e-14, 0);
   TH_CLOSE("kinetic energy conserved", kinetic(&s), 1.0, 1e-15, 0);
@@ -59,8 +59,8 @@ static void restitution_unequal_masses(void)
   double e0 = kinetic(&s);
   wg_ed_advance(&s, 5);
   double ra[2], va[2], rb[2], vb[2];
-  wg_ed_position_at(&s, 0, 5, ra, va);
-  wg_ed_position_at(&s, 1, 5, rb, vb);
+  wg_ed_position_of(&s, 0, 5, ra, va);
+  wg_ed_position_of(&s, 1, 5, rb, vb);
   double e = 0.8, m1 = m[0], m2 = m[1], u1 = v[0], u2 = v[2];
   double v1 = ((m1 - e * m2) * u1 + (1 + e) * m2 * u2) / (m1 + m2);
   double v2 = ((m2 - e * m1) * u2 + (1 + e) * m1 * u1) / (m1 + m2);
@@ -88,8 +88,8 @@ static void tc_model(void)
   TH_CHECK(wg_ed_alloc_state(&s, &sc, 3, r, v, rad, NULL, 0) == WG_OK, "state set up");
   wg_ed_advance(&s, 0.8); /* collisions at t = 0.5 and 0.6333; the next is at 0.9 */
   double rr[2], v2[2], v3[2];
-  wg_ed_position_at(&s, 1, 0.8, rr, v2);
-  wg_ed_position_at(&s, 2, 0.8, rr, v3);
+  wg_ed_position_of(&s, 1, 0.8, rr, v2);
+  wg_ed_position_of(&s, 2, 0.8, rr, v3);
   TH_CHECK(s.counts.collisions == 2, "two collisions by t = 0.8 (%llu)", s.counts.collisions);
   /* first collision inelastic: v2 = (1+e)/2 * 2 = 1.5; second within tc: elastic swap */
   TH_CLOSE("second particle stops (elastic swap inside tc)", v2[0], 0.0, 0, 1e-15);
@@ -110,7 +110,7 @@ static void periodic_image(void)
   wg_ed_advance(&s, 0.150001);
   TH_CHECK(s.counts.collisions == 1, "collision through the periodic boundary at t = 0.15");
   double rr[2], vv[2];
-  wg_ed_position_at(&s, 0, 1.0, rr, vv);
+  wg_ed_position_of(&s, 0, 1.0, rr, vv);
   TH_CLOSE("particle 0 bounced back", vv[0], 1.0, 1e-15, 0);
   wg_ed_free(&s);
 }
@@ -131,8 +131,8 @@ static void bridge_case(double u, double e_cb, int *ruptures, int *reflections, 
   double e0 = kinetic(&s);
   wg_ed_advance(&s, 3.0 / u);
   double rr[2], va[2], vb[2];
-  wg_ed_position_at(&s, 0, s.now, rr, va);
-  wg_ed_position_at(&s, 1, s.now, rr, vb);
+  wg_ed_position_of(&s, 0, s.now, rr, va);
+  wg_ed_position_of(&s, 1, s.now, rr, vb);
   *ruptures = (int)s.counts.ruptures;
   *reflections = (int)s.counts.reflections;
   *u_after = vb[0] - va[0];
@@ -179,7 +179,7 @@ static void ball_on_shaken_floor(void)
   TH_CHECK(wg_ed_alloc_state(&s, &sc, 1, r, v, rad, NULL, 0) == WG_OK, "state set up");
   wg_ed_advance(&s, 1000);
   double rr[2], vv[2];
-  wg_ed_position_at(&s, 0, s.now, rr, vv);
+  wg_ed_position_of(&s, 0, s.now, rr, vv);
   double wall = sc.amplitude * sin(sc.omega * s.now);
   TH_CHECK(s.counts.wall_hits > 100, "ball keeps bouncing (%llu wall hits)", s.counts.wall_hits);
   TH_CHECK(rr[1] - 0.5 >= wall - 1e-9 && rr[1] + 0.5 <= 50 + sc.amplitude,

@@ -34,7 +34,7 @@ run "b_gas3d_N1e5_phi0.3"  "$scenes/gas3d.ini" n=100000 t_end=2
 run "c_shake3d_fig5.2c_N1e4" "$scenes/shake3d_5_2c.ini" t_end=30 dt_checkpoint=0
 echo "== cost per event against N (gas3d, phi = 0.3)"
 for n in 1000 10000 100000 1000000; do
-  run "d_gas3d_N$n" "$scenes/gas3d.ini" n=$n t_end=1
+  run "d_gas3d_N$n" "$scenes/gas3d.ini" n=$n t_end=$(awk -v n=$n "BEGIN { print 2e6 / n }")
 done
 echo "== exact wall solver against the brute-force scan at T_driv/1000 (same trajectories, same run)"
 "$benchdir/bench_wall" | tee "$out/bench_wall.tsv"
