@@ -155,22 +155,28 @@ long wg_cells_step(const wg_cells *c, long cell, int axis, int dir, int *wrapped
   return flat(c, ix);
 }
 
-/* Cells at offsets lo_off..hi_off per axis around ix, without duplicates. */
+/* Cells at offsets lo_off..hi_off per axis around ix, without duplicates: each axis's
+   coordinates are wrapped (periodic) or dropped (beyond a wall) once, then combined. */
 static int block(const wg_cells *c, const int *ix, const int *lo_off, const int *hi_off, long *out)
 {
-  int m = 0;
-  for (int dz = lo_off[2]; dz <= hi_off[2]; dz++)
-    for (int dy = lo_off[1]; dy <= hi_off[1]; dy++)
-      for (int dx = lo_off[0]; dx <= hi_off[0]; dx++) {
-        int jx[3] = {ix[0] + dx, ix[1] + dy, ix[2] + dz};
-        int ok = 1;
-        for (int a = 0; a < 3 && ok; a++) {
-          if (jx[a] >= 0 && jx[a] < c->nc[a]) continue;
-          if (!c->periodic[a]) ok = 0;
-          else jx[a] = (jx[a] + c->nc[a]) % c->nc[a];
-        }
-        if (ok) out[m++] = flat(c, jx);
+  long coord[3][3];
+  int count[3];
+  long stride[3] = {1, c->nc[0], (long)c->nc[0] * c->nc[1]};
+  for (int a = 0; a < 3; a++) {
+    count[a] = 0;
+    for (int d = lo_off[a]; d <= hi_off[a]; d++) {
+      int x = ix[a] + d;
+      if (x < 0 || x >= c->nc[a]) {
+        if (!c->periodic[a]) continue;
+        x = x < 0 ? x + c->nc[a] : x - c->nc[a];
       }
+      coord[a][count[a]++] = x * stride[a];
+    }
+  }
+  int m = 0;
+  for (int z = 0; z < count[2]; z++)
+    for (int y = 0; y < count[1]; y++)
+      for (int x = 0; x < count[0]; x++) out[m++] = coord[0][x] + coord[1][y] + coord[2][z];
   return m;
 }
 

@@ -161,44 +161,112 @@ static inline void consider(candidate *best, double t, int type, long partner)
   }
 }
 
-/* Earliest event of pair (i, j): hard-core contact while approaching (Eq. B.3), or, for a
-   bonded pair, the moment the gap reaches s_crit.  Overlapping pairs that approach collide
-   at once; overlapping pairs that separate are left alone (App. B.5.6). */
-static inline void predict_pair(const wg_ed *s, long i, long j, candidate *best)
+/* Particle i seen from the present, with the constants of the neighbour loop kept at hand:
+   its position and velocity extrapolated to now, computed once and then compared with every
+   neighbour. */
+typedef struct probe {
+  long i;
+  double r[3], v[3], radius;
+  double now, g, box[3], half[3];
+  int periodic[3], up, wet;
+} probe;
+
+static inline void probe_at_now(const wg_ed *s, long i, probe *pr)
 {
-  double dr[3], dv[3];
-  double t0 = pair_state(s, i, j, dr, dv);
-  double b = dot(dr, dv, s->dim);
-  double r2 = dot(dr, dr, s->dim);
-  double a = dot(dv, dv, s->dim);
-  double sigma = s->p[i].radius + s->p[j].radius;
-  double now = s->now;
-  if (b < 0) {
+  const wg_particle *a = &s->p[i];
+  double dt = s->now - a->t;
+  pr->i = i;
+  pr->radius = a->radius;
+  pr->now = s->now;
+  pr->g = s->g;
+  pr->up = s->up;
+  pr->wet = s->wet;
+  for (int k = 0; k < 3; k++) {
+    pr->r[k] = a->r[k] + a->v[k] * dt;
+    pr->v[k] = a->v[k];
+    pr->box[k] = s->box[k];
+    pr->half[k] = 0.5 * s->box[k];
+    pr->periodic[k] = k < s->dim && s->periodic[k];
+  }
+  if (s->g > 0) {
+    pr->r[s->up] -= 0.5 * s->g * dt * dt;
+    pr->v[s->up] -= s->g * dt;
+  }
+}
+
+/* Earliest event of the pair (probe, j): hard-core contact while approaching (Eq. B.3), or,
+   for a bonded pair, the moment the gap reaches s_crit.  Overlapping pairs that approach
+   collide at once; overlapping pairs that separate are left alone (App. B.5.6).  Relative
+   motion is free flight: gravity drops out.  dim is a constant at each call site, so the
+   compiler specialises the loops. */
+static inline __attribute__((always_inline)) void
+predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim)
+{
+  const wg_particle *b = &s->p[j];
+  double dt = pr->now - b->t;
+  double dr[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
+  for (int k = 0; k < dim; k++) {
+    dr[k] = b->r[k] + b->v[k] * dt - pr->r[k];
+    dv[k] = b->v[k] - pr->v[k];
+  }
+  if (pr->g > 0) {
+    dr[pr->up] -= 0.5 * pr->g * dt * dt;
+    dv[pr->up] -= pr->g * dt;
+  }
+  for (int k = 0; k < dim; k++)
+    if (pr->periodic[k]) {
+      if (dr[k] > pr->half[k]) dr[k] -= pr->box[k];
+      else if (dr[k] < -pr->half[k]) dr[k] += pr->box[k];
+    }
+  double bdot = dot(dr, dv, dim);
+  int bonded = pr->wet && wg_ed_bonded(s, pr->i, j);
+  if (bdot >= 0 && !bonded) return; /* receding and free: nothing can happen */
+  double r2 = dot(dr, dr, dim);
+  double a = dot(dv, dv, dim);
+  double sigma = pr->radius + b->radius;
+  if (bdot < 0) {
     double c = r2 - sigma * sigma;
     if (c <= 0) {
-      consider(best, t0 > now ? t0 : now, WG_EV_COLLISION, j);
+      consider(best, pr->now, WG_EV_COLLISION, j);
       return;
     }
-    double disc = b * b - a * c;
+    double disc = bdot * bdot - a * c;
     if (disc > 0) {
-      double t = t0 + c / (-b + sqrt(disc));
-      consider(best, t > now ? t : now, WG_EV_COLLISION, j);
+      consider(best, pr->now + c / (-bdot + sqrt(disc)), WG_EV_COLLISION, j);
       return;
     }
   }
-  if (s->wet && wg_ed_bonded(s, i, j)) {
+  if (bonded) {
     double edge = sigma + s->s_crit;
     double c = r2 - edge * edge;
     double t;
     if (c >= 0) {
-      if (b <= 0) return;
-      t = t0;
+      if (bdot <= 0) return;
+      t = 0;
     } else {
       if (a == 0) return;
-      double disc = b * b - a * c;
-      t = t0 + (b > 0 ? -c / (b + sqrt(disc)) : (-b + sqrt(disc)) / a);
+      double disc = bdot * bdot - a * c;
+      t = bdot > 0 ? -c / (bdot + sqrt(disc)) : (-bdot + sqrt(disc)) / a;
     }
-    consider(best, t > now ? t : now, WG_EV_BRIDGE_EDGE, j);
+    consider(best, pr->now + t, WG_EV_BRIDGE_EDGE, j);
+  }
+}
+
+/* Every pair of particle i with the particles of the given cells. */
+static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncells,
+                             candidate *best)
+{
+  probe pr;
+  probe_at_now(s, i, &pr);
+  const int32_t *head = s->cells.head, *next = s->cells.next;
+  if (s->dim == 3) {
+    for (int k = 0; k < ncells; k++)
+      for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
+        if (j != i) predict_pair(s, &pr, j, best, 3);
+  } else {
+    for (int k = 0; k < ncells; k++)
+      for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
+        if (j != i) predict_pair(s, &pr, j, best, 2);
   }
 }
 
@@ -250,9 +318,7 @@ static void predict_all(wg_ed *s, long i, int reschedule)
   long stencil[27];
   if (s->nwalls) predict_walls(s, i, &best);
   int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
-  for (int k = 0; k < m; k++)
-    for (int32_t j = s->cells.head[stencil[k]]; j >= 0; j = s->cells.next[j])
-      if (j != i) predict_pair(s, i, j, &best);
+  predict_pairs_in(s, i, stencil, m, &best);
   set_phys(s, i, &best);
   predict_cell(s, i, -1, 0);
   if (reschedule) schedule(s, i);
@@ -264,7 +330,7 @@ static void predict_all(wg_ed *s, long i, int reschedule)
    u_n = (v_j - v_i).n (negative while approaching); *dist is |r_j - r_i|. */
 static double contact_normal(const wg_ed *s, long i, long j, double *n, double *dist)
 {
-  double dr[3], dv[3];
+  double dr[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
   pair_state(s, i, j, dr, dv);
   *dist = sqrt(dot(dr, dr, s->dim));
   for (int k = 0; k < 3; k++) n[k] = k < s->dim ? dr[k] / *dist : 0;
@@ -382,9 +448,7 @@ static void cell_crossing(wg_ed *s, long i)
   candidate best = {s->t_phys[i], s->ev_type[i], s->ev_partner[i]};
   long face[9];
   int m = wg_cells_face(&s->cells, to, axis, dir, face);
-  for (int k = 0; k < m; k++)
-    for (int32_t j = s->cells.head[face[k]]; j >= 0; j = s->cells.next[j])
-      if (j != i) predict_pair(s, i, j, &best);
+  predict_pairs_in(s, i, face, m, &best);
   if (best.t < s->t_phys[i]) set_phys(s, i, &best);
   predict_cell(s, i, axis, -dir);
   schedule(s, i);
@@ -459,54 +523,70 @@ int wg_ed_advance(wg_ed *s, double t_stop)
   return WG_OK;
 }
 
+/* Apply new[k] = old[order[k]] in place, cycle by cycle; done[] is scratch (n bytes). */
+static void permute(void *base, size_t size, long n, const int32_t *order, uint8_t *done)
+{
+  char *a = base, tmp[128]; /* holds one element: at most a row of 16 bonds */
+  memset(done, 0, (size_t)n);
+  for (long k = 0; k < n; k++) {
+    if (done[k] || order[k] == k) continue;
+    memcpy(tmp, a + (size_t)k * size, size);
+    long j = k;
+    for (;;) {
+      long src = order[j];
+      done[j] = 1;
+      if (src == k) {
+        memcpy(a + (size_t)j * size, tmp, size);
+        break;
+      }
+      memcpy(a + (size_t)j * size, a + (size_t)src * size, size);
+      j = src;
+    }
+  }
+}
+
 /* Renumber the slots in the order of the cells (a counting sort, stable, so an ordered
-   state stays as it is).  Every per-particle array moves along; bond partners are
-   translated.  Scratch memory is taken here, outside the event loop. */
+   state stays as it is).  Every per-particle array moves along, in place; bond partners are
+   translated.  The scratch (9 bytes per particle and one word per cell) is taken here,
+   outside the event loop. */
 static int renumber_by_cell(wg_ed *s)
 {
   long n = s->n;
   int fail = 0;
   long *start = zalloc((size_t)s->cells.ncell + 1, sizeof *start, &fail);
   int32_t *order = zalloc((size_t)n, sizeof *order, &fail);  /* order[new] = old */
-  int32_t *to = zalloc((size_t)n, sizeof *to, &fail);        /* to[old] = new */
-  wg_particle *p = zalloc((size_t)n, sizeof *p, &fail);
-  double *d = zalloc((size_t)n, sizeof *d, &fail);
-  int32_t *b = s->wet ? zalloc((size_t)n * s->bond_cap, sizeof *b, &fail) : NULL;
-  uint8_t *nb = s->wet ? zalloc((size_t)n, sizeof *nb, &fail) : NULL;
+  uint8_t *done = zalloc((size_t)n, 1, &fail);
   if (fail) {
-    free(start); free(order); free(to); free(p); free(d); free(b); free(nb);
+    free(start); free(order); free(done);
     return wg_error(WG_ENOMEM, "engine", "no memory to renumber %ld particles", n);
   }
   for (long i = 0; i < n; i++) start[wg_cells_locate(&s->cells, s->p[i].r) + 1]++;
   for (long c = 0; c < s->cells.ncell; c++) start[c + 1] += start[c];
-  for (long i = 0; i < n; i++) {
-    long k = start[wg_cells_locate(&s->cells, s->p[i].r)]++;
-    order[k] = (int32_t)i;
-    to[i] = (int32_t)k;
-  }
-  for (long k = 0; k < n; k++) p[k] = s->p[order[k]];
-  memcpy(s->p, p, sizeof *p * (size_t)n);
-  for (long k = 0; k < n; k++) s->slot[k] = s->id[order[k]];
-  memcpy(s->id, s->slot, sizeof *s->id * (size_t)n);
-  for (long k = 0; k < n; k++) s->slot[s->id[k]] = (int32_t)k;
-  if (s->mass) {
-    for (long k = 0; k < n; k++) d[k] = s->mass[order[k]];
-    memcpy(s->mass, d, sizeof *d * (size_t)n);
-  }
-  if (s->t_last) {
-    for (long k = 0; k < n; k++) d[k] = s->t_last[order[k]];
-    memcpy(s->t_last, d, sizeof *d * (size_t)n);
-  }
+  for (long i = 0; i < n; i++) order[start[wg_cells_locate(&s->cells, s->p[i].r)]++] = (int32_t)i;
+  free(start);
+  if (s->wet) /* bond partners by identity while slots move */
+    for (long k = 0; k < n; k++)
+      for (int m = 0; m < s->nbond[k]; m++) {
+        int32_t *b = &s->bond[(size_t)k * s->bond_cap + m];
+        *b = s->id[*b];
+      }
+  permute(s->p, sizeof *s->p, n, order, done);
+  permute(s->id, sizeof *s->id, n, order, done);
+  if (s->mass) permute(s->mass, sizeof *s->mass, n, order, done);
+  if (s->t_last) permute(s->t_last, sizeof *s->t_last, n, order, done);
   if (s->wet) {
-    for (long k = 0; k < n; k++) {
-      nb[k] = s->nbond[order[k]];
-      for (int m = 0; m < nb[k]; m++)
-        b[(size_t)k * s->bond_cap + m] = to[s->bond[(size_t)order[k] * s->bond_cap + m]];
-    }
-    memcpy(s->nbond, nb, (size_t)n);
-    memcpy(s->bond, b, sizeof *b * (size_t)n * s->bond_cap);
+    permute(s->nbond, sizeof *s->nbond, n, order, done);
+    permute(s->bond, sizeof *s->bond * (size_t)s->bond_cap, n, order, done);
   }
-  free(start); free(order); free(to); free(p); free(d); free(b); free(nb);
+  for (long k = 0; k < n; k++) s->slot[s->id[k]] = (int32_t)k;
+  if (s->wet)
+    for (long k = 0; k < n; k++)
+      for (int m = 0; m < s->nbond[k]; m++) {
+        int32_t *b = &s->bond[(size_t)k * s->bond_cap + m];
+        *b = s->slot[*b];
+      }
+  free(order);
+  free(done);
   return WG_OK;
 }
 

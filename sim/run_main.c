@@ -32,8 +32,7 @@ static void usage(FILE *out)
           "\n"
           "At the end one line on stderr:\n"
           "  summary: events=N sim_time=T wall_s=S events_per_s=R ledger_residual=X ...\n"
-          "\n"
-          "Scene keys:\n");
+          "\n");
   wg_scene_print_keys(out);
 }
 

@@ -10,7 +10,11 @@ mkdir -p "$out"
 tsv=$out/bench.tsv
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-echo -e "case\tn\tevents\tcell_crossings\twall_s\tevents_per_s\tall_events_per_s\tns_per_event\tpeak_rss_kb\tengine_bytes_per_particle\trss_bytes_per_particle" > "$tsv"
+echo -e "case\tn\tevents\tcell_crossings\twall_s\tevents_per_s\tall_events_per_s\tns_per_event\tpeak_rss_kb\tengine_bytes_per_particle\trss_bytes_per_particle_above_baseline" > "$tsv"
+# baseline: the resident memory of a run with a handful of particles (libraries, buffers)
+"$bindir/wetgran-run" "$scenes/gas3d.ini" n=27 t_end=1 -q -o "$tmp/base.h5" 2> "$tmp/base.err"
+base_kb=$(grep -o 'peak_rss_kb=[0-9]*' "$tmp/base.err" | cut -d= -f2)
+echo "baseline peak RSS (27 particles): $base_kb kB"
 
 # run NAME SCENE [key=value ...]: one wetgran-run, its summary line turned into a row
 run() {
@@ -19,11 +23,11 @@ run() {
   local line n
   line=$(grep '^summary:' "$tmp/err")
   n=$(h5dump -d /particles/all/diameter -H "$tmp/run.h5" 2>/dev/null | grep -o 'DATASPACE  SIMPLE { ( [0-9]*' | grep -o '[0-9]*$')
-  echo "$line" | awk -v name="$name" -v n="$n" '{
+  echo "$line" | awk -v name="$name" -v n="$n" -v base="$base_kb" '{
     for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] }
     ev = v["events"]; cc = v["cell_crossings"]; w = v["wall_s"]
     printf "%s\t%d\t%d\t%d\t%.3f\t%.4g\t%.4g\t%.1f\t%d\t%d\t%.0f\n", name, n, ev, cc, w, ev / w, (ev + cc) / w,
-           1e9 * w / ev, v["peak_rss_kb"], v["engine_bytes_per_particle"], 1024 * v["peak_rss_kb"] / n
+           1e9 * w / ev, v["peak_rss_kb"], v["engine_bytes_per_particle"], 1024 * (v["peak_rss_kb"] - base) / n
   }' | tee -a "$tsv"
   rm -f "$tmp/run.h5"
 }
