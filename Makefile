@@ -68,6 +68,9 @@ $(BIN)/wetgran-run: $(BUILD)/sim/run_main.o $(LIB) | $(BIN)
 $(BIN)/wetgran-%: analysis/%.c $(LIB) | $(BIN)
 	$(CC) $(ALL_CFLAGS) $< $(LIB) $(LIBS) -o $@
 
+# wetgran-boundary triangulates with qhull (reentrant library)
+$(BIN)/wetgran-boundary: LIBS += -lqhull_r
+
 $(BUILD)/tests/%: tests/%.c tests/tharness.h $(LIB) | $(BUILD)/tests
 	$(CC) $(ALL_CFLAGS) -Itests $< $(LIB) $(LIBS) -o $@
 
@@ -91,11 +94,15 @@ bench: deps
 # Figures: make fig3_2 [PROFILE=quick|full]; each is experiments/<id>/.
 PROFILE ?= quick
 FIGURES := $(notdir $(wildcard experiments/fig*))
-.PHONY: $(FIGURES) figures
+.PHONY: $(FIGURES) figures check-figures
 $(FIGURES): deps
 	$(MAKE) tools
 	$(MAKE) -C experiments/$@ PROFILE=$(PROFILE)
 figures: $(FIGURES)
+
+# Compare every figure's results.tsv with data/reference/<id>.tsv (after make figures).
+check-figures:
+	./scripts/check-figures.sh $(PROFILE)
 
 # The main job: thesis Fig. 3.2 (event-driven curves) at CI scale.
 demo: fig3_2

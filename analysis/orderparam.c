@@ -1,0 +1,410 @@
+/* wetgran-orderparam: order parameters and phase label of shaken runs (thesis App. 3.A).
+   One row per run file: the stationary T_g / E_cb with its error, the lateral contrasts
+   Delta n_cb and Delta n_area (Eq. 3.3), the temperatures of the densest and most dilute
+   parts, and a label s, f, g, sfc, sgc or fgc.  --calibrate derives the label thresholds
+   from the runs given (Otsu's criterion on their distributions). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io_h5.h"
+
+#define BLOCKS 10            /* blocks for the error of time averages */
+#define DRIFT_SIGMAS 3.0     /* a window drifting by more than this many errors ... */
+#define DRIFT_REL 0.05       /* ... and by more than 5 % is not stationary, */
+#define DRIFT_GROSS 0.5      /* nor is one whose halves differ by more than half */
+#define QUINTILE 0.2         /* densest / most dilute fraction of the bins */
+
+typedef struct thresholds {
+  double t_sf;   /* T_g / E_cb below which a region is solid */
+  double t_fg;   /* T_g / E_cb above which a region is a gas */
+  double dn;     /* Delta n_cb (wet) or Delta n_area (dry) above which phases coexist */
+} thresholds;
+
+/* Defaults, used without --calibrate: the order of magnitude of the cuts that --calibrate
+   finds on the elastic 2D sweep of experiments/fig3_4a (fluid below ~10 E_cb, gas above;
+   coexistence when n_cb varies by more than ~1 bridge per d).  A solid is a state whose
+   random motion is small against E_cb (App. 3.A.1.1): below 1e-2 E_cb. */
+static const thresholds default_thresholds = {1e-2, 12.0, 1.0};
+
+typedef struct row {
+  const char *file;
+  double gamma, estar, estar_d, e_cb, eps;
+  double t0, t1, drift;
+  int stationary;
+  double tg, tg_err, tg_dense, tg_dilute, dn_cb, dn_area;
+  int has_profiles;
+  char label[4];
+} row;
+
+static int param(hid_t f, const char *path, const char *key, double *v)
+{
+  char buf[128];
+  if (wg_h5_read_attr_string(f, "/parameters", key, buf, sizeof buf) != WG_OK) return WG_EIO;
+  char *end;
+  *v = strtod(buf, &end);
+  if (end == buf) return wg_error(WG_EIO, path, "parameter '%s' = '%s' is not a number", key, buf);
+  return WG_OK;
+}
+
+static double *read_1d(hid_t f, const char *path, const char *name, size_t *n)
+{
+  int rank;
+  hsize_t dims[8];
+  if (wg_h5_dims(f, name, &rank, dims) != WG_OK) return NULL;
+  *n = dims[0];
+  double *x = malloc(sizeof *x * (dims[0] ? dims[0] : 1));
+  if (x && wg_h5_read(f, name, H5T_NATIVE_DOUBLE, x) != WG_OK) {
+    free(x);
+    x = NULL;
+  }
+  if (!x) wg_error(WG_EIO, path, "cannot read %s", name);
+  return x;
+}
+
+/* Mean of v over samples with t in [t0, t1], its error from BLOCKS block means, and the
+   means of the first and second half of the window. */
+static void window_mean(const double *t, const double *v, size_t n, double t0, double t1,
+                        double *mean, double *err, double *first, double *second)
+{
+  size_t a = 0, b;
+  while (a < n && t[a] < t0) a++;
+  b = a;
+  while (b < n && t[b] <= t1) b++;
+  size_t m = b - a;
+  *mean = *err = *first = *second = NAN;
+  if (m == 0) return;
+  double s = 0;
+  for (size_t k = a; k < b; k++) s += v[k];
+  *mean = s / m;
+  double h1 = 0, h2 = 0;
+  for (size_t k = a; k < a + m / 2; k++) h1 += v[k];
+  for (size_t k = a + m / 2; k < b; k++) h2 += v[k];
+  *first = m / 2 ? h1 / (m / 2) : *mean;
+  *second = h2 / (m - m / 2);
+  if (m < 2 * BLOCKS) return;
+  double bm[BLOCKS], bs = 0, bs2 = 0;
+  size_t len = m / BLOCKS;
+  for (int k = 0; k < BLOCKS; k++) {
+    double x = 0;
+    for (size_t j = 0; j < len; j++) x += v[a + k * len + j];
+    bm[k] = x / len;
+    bs += bm[k];
+    bs2 += bm[k] * bm[k];
+  }
+  double var = (bs2 - bs * bs / BLOCKS) / (BLOCKS - 1);
+  *err = var > 0 ? sqrt(var / BLOCKS) : 0;
+}
+
+/* Average of y over the bins whose key lies in the top (top = 1) or bottom quintile. */
+static double quintile_mean(const double *key, const double *y, size_t n, int top)
+{
+  double *sorted = malloc(sizeof *sorted * n);
+  if (!sorted) return NAN;
+  memcpy(sorted, key, sizeof *sorted * n);
+  for (size_t i = 1; i < n; i++) /* insertion sort: n is a few hundred bins */
+    for (size_t j = i; j > 0 && sorted[j - 1] > sorted[j]; j--) {
+      double x = sorted[j];
+      sorted[j] = sorted[j - 1];
+      sorted[j - 1] = x;
+    }
+  size_t k = (size_t)(QUINTILE * n);
+  if (k < 1) k = 1;
+  double cut = top ? sorted[n - k] : sorted[k - 1];
+  free(sorted);
+  double s = 0;
+  int c = 0;
+  for (size_t i = 0; i < n; i++)
+    if ((top && key[i] >= cut) || (!top && key[i] <= cut)) {
+      if (isfinite(y[i])) {
+        s += y[i];
+        c++;
+      }
+    }
+  return c ? s / c : NAN;
+}
+
+static double range_of(const double *x, size_t n)
+{
+  double lo = INFINITY, hi = -INFINITY;
+  for (size_t i = 0; i < n; i++) {
+    if (x[i] < lo) lo = x[i];
+    if (x[i] > hi) hi = x[i];
+  }
+  return n ? hi - lo : NAN;
+}
+
+static int measure(const char *path, row *r)
+{
+  memset(r, 0, sizeof *r);
+  r->file = path;
+  hid_t f = wg_h5_open_read(path);
+  if (f < 0) return WG_EIO;
+  int st = WG_OK;
+  double t_end, profile_start;
+  st |= param(f, path, "gamma", &r->gamma);
+  st |= param(f, path, "estar", &r->estar);
+  st |= param(f, path, "estar_d", &r->estar_d);
+  st |= param(f, path, "e_cb", &r->e_cb);
+  st |= param(f, path, "eps", &r->eps);
+  st |= param(f, path, "t_end", &t_end);
+  st |= param(f, path, "profile_start", &profile_start);
+  if (st != WG_OK) {
+    wg_h5_close(f);
+    return wg_error(WG_EIO, path, "not a shaker run file of wetgran-run (missing parameters)");
+  }
+  size_t n, nv;
+  double *t = read_1d(f, path, "/observables/temperature/time", &n);
+  double *v = read_1d(f, path, "/observables/temperature/value", &nv);
+  if (!t || !v || n != nv) {
+    free(t);
+    free(v);
+    wg_h5_close(f);
+    return WG_EIO;
+  }
+  r->t0 = profile_start;
+  r->t1 = t_end;
+  double first, second;
+  window_mean(t, v, n, r->t0, r->t1, &r->tg, &r->tg_err, &first, &second);
+  free(t);
+  free(v);
+  double scale = r->e_cb > 0 ? r->e_cb : 1;
+  r->tg /= scale;
+  r->tg_err /= scale;
+  double half_err = isfinite(r->tg_err) ? r->tg_err * sqrt(2.0) * scale : 0;
+  r->drift = (second - first) / (0.5 * (first + second));
+  r->stationary = !((fabs(second - first) > DRIFT_SIGMAS * half_err && fabs(r->drift) > DRIFT_REL) ||
+                    fabs(r->drift) > DRIFT_GROSS);
+
+  r->has_profiles = wg_h5_exists(f, "/observables/profiles/x");
+  r->tg_dense = r->tg_dilute = r->dn_cb = r->dn_area = NAN;
+  if (r->has_profiles) {
+    size_t b1, b2, b3;
+    double *pf = read_1d(f, path, "/observables/profiles/packing_fraction", &b1);
+    double *tb = read_1d(f, path, "/observables/profiles/temperature", &b2);
+    double *nc = read_1d(f, path, "/observables/profiles/bridge_density", &b3);
+    if (pf && tb && nc && b1 == b2 && b2 == b3) {
+      r->dn_cb = range_of(nc, b3);     /* Eq. 3.3 */
+      r->dn_area = range_of(pf, b1);
+      r->tg_dense = quintile_mean(pf, tb, b1, 1) / scale;
+      r->tg_dilute = quintile_mean(pf, tb, b1, 0) / scale;
+    } else {
+      st = WG_EIO;
+    }
+    free(pf);
+    free(tb);
+    free(nc);
+  }
+  wg_h5_close(f);
+  return st;
+}
+
+static const char *region(double tg, const thresholds *th)
+{
+  return tg < th->t_sf ? "s" : tg > th->t_fg ? "g" : "f";
+}
+
+/* Homogeneous: the whole sample's T_g decides.  Coexisting (contrast above dn): the densest
+   and the most dilute fifth of the lateral bins are classified separately. */
+static void label(row *r, const thresholds *th)
+{
+  double contrast = r->e_cb > 0 ? r->dn_cb : r->dn_area;
+  if (r->has_profiles && contrast > th->dn) {
+    const char *a = region(r->tg_dense, th), *b = region(r->tg_dilute, th);
+    if (strcmp(a, b) != 0) {
+      snprintf(r->label, sizeof r->label, "%s%sc", a, b);
+      return;
+    }
+  }
+  snprintf(r->label, sizeof r->label, "%s", region(r->tg, th));
+}
+
+/* Otsu: the cut of sorted x[0..n-1] into classes [0, k) and [k, n) with the largest
+   between-class variance; returns the midpoint between x[k-1] and x[k]. */
+static double otsu_two(const double *x, size_t n)
+{
+  double best = -1, cut = NAN, total = 0;
+  for (size_t i = 0; i < n; i++) total += x[i];
+  double left = 0;
+  for (size_t k = 1; k < n; k++) {
+    left += x[k - 1];
+    double m1 = left / k, m2 = (total - left) / (n - k);
+    double between = (double)k * (n - k) * (m1 - m2) * (m1 - m2);
+    if (between > best && x[k] > x[k - 1]) {
+      best = between;
+      cut = 0.5 * (x[k - 1] + x[k]);
+    }
+  }
+  return cut;
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+static double mean_of(const double *x, size_t n)
+{
+  double s = 0;
+  for (size_t i = 0; i < n; i++) s += x[i];
+  return n ? s / n : NAN;
+}
+
+/* Thresholds from the runs (a sweep):
+   1. dn: Otsu's two-class cut of the lateral contrasts (homogeneous | coexisting).
+   2. t_fg: Otsu's cut of log10(T_g/E_cb) over the homogeneous runs: the jump between fluid
+      and gas (Fig. 3.28b).
+   3. t_sf: Otsu's cut within the colder class, kept only if its two sub-classes differ by
+      more than SOLID_DECADES in mean log T (a solid is far colder than a fluid); otherwise
+      the sweep holds no solid and the default stays.
+   Each step reports the classes it found on stderr, so the choice can be checked. */
+#define SOLID_DECADES 1.0
+#define MIN_RUNS_CONTRAST 4 /* fewer runs cannot show two classes of contrast */
+static void calibrate(const row *rows, size_t n, thresholds *th)
+{
+  double *lt = malloc(sizeof *lt * n), *dn = malloc(sizeof *dn * n);
+  size_t nt = 0, nd = 0;
+  *th = default_thresholds;
+  if (!lt || !dn) {
+    free(lt);
+    free(dn);
+    return;
+  }
+  for (size_t i = 0; i < n; i++) {
+    double c = rows[i].e_cb > 0 ? rows[i].dn_cb : rows[i].dn_area;
+    if (isfinite(c)) dn[nd++] = c;
+  }
+  if (nd >= MIN_RUNS_CONTRAST) {
+    qsort(dn, nd, sizeof *dn, cmp_double);
+    double c = otsu_two(dn, nd);
+    if (isfinite(c)) th->dn = c;
+  }
+  for (size_t i = 0; i < n; i++) {
+    double c = rows[i].e_cb > 0 ? rows[i].dn_cb : rows[i].dn_area;
+    if (rows[i].tg > 0 && !(c > th->dn)) lt[nt++] = log10(rows[i].tg);
+  }
+  qsort(lt, nt, sizeof *lt, cmp_double);
+  double cut = nt >= 2 ? otsu_two(lt, nt) : NAN;
+  if (isfinite(cut)) {
+    th->t_fg = pow(10, cut);
+    size_t k = 0;
+    while (k < nt && lt[k] < cut) k++;
+    fprintf(stderr, "calibrate: contrast cut dn = %.4g; homogeneous runs: %zu below T_g/E_cb = %.4g "
+            "(mean log10 %.3f), %zu above (mean log10 %.3f)\n", th->dn, k, th->t_fg,
+            mean_of(lt, k), nt - k, mean_of(lt + k, nt - k));
+    double sub = k >= 2 ? otsu_two(lt, k) : NAN;
+    if (isfinite(sub)) {
+      size_t j = 0;
+      while (j < k && lt[j] < sub) j++;
+      double gap = mean_of(lt + j, k - j) - mean_of(lt, j);
+      if (gap > SOLID_DECADES) th->t_sf = pow(10, sub);
+      fprintf(stderr, "calibrate: colder class splits at %.4g into means %.3g decades apart: %s\n",
+              pow(10, sub), gap, gap > SOLID_DECADES ? "solid and fluid" : "no solid in this sweep");
+    }
+  }
+  free(lt);
+  free(dn);
+}
+
+static void usage(FILE *out)
+{
+  fprintf(out,
+          "Usage: wetgran-orderparam [options] RUN.h5 ...\n"
+          "Order parameters of shaken runs (thesis App. 3.A), one tab-separated row per run:\n"
+          "  gamma estar estar_d e_cb eps   parameters of the run\n"
+          "  t0 t1                          averaging window: [profile_start, t_end]\n"
+          "  stationary drift               0 if the window's two halves differ by more than\n"
+          "                                 %g errors and %g %%, or by more than %g %%\n"
+          "                                 (drift: their relative difference)\n"
+          "  tg tg_err                      mean T_g (Eq. 3.2) / E_cb over the window (dry runs:\n"
+          "                                 in m g d) and its error from %d block means\n"
+          "  tg_dense tg_dilute             T_g / E_cb of the densest and most dilute fifth of\n"
+          "                                 the lateral bins (needs profile_bins > 0)\n"
+          "  dn_cb dn_area                  Eq. 3.3: max - min of the bridge density n_cb\n"
+          "                                 [1/d^(D-1)] and of the packing fraction\n"
+          "  label                          s, f, g, sfc, sgc or fgc (see below)\n"
+          "Labels: a region is solid below T_g/E_cb = t_sf, a gas above t_fg, fluid between;\n"
+          "phases coexist when dn_cb (wet) or dn_area (dry) exceeds dn, and then the densest and\n"
+          "most dilute fifths are labelled separately.\n"
+          "Options:\n"
+          "  --t-sf X --t-fg Y --dn Z   thresholds (defaults %g, %g, %g)\n"
+          "  --calibrate                derive the thresholds from the runs given, a sweep:\n"
+          "                             Otsu's cut of the contrasts gives dn; Otsu's cut of\n"
+          "                             log T_g over the homogeneous runs gives t_fg; a further\n"
+          "                             cut of the colder class gives t_sf if its halves lie\n"
+          "                             more than a decade apart.  The classes found go to\n"
+          "                             stderr, the thresholds to a '#' line before the table\n",
+          DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
+          default_thresholds.t_fg, default_thresholds.dn);
+}
+
+static int parse_double(const char *opt, const char *s, double *v)
+{
+  char *end;
+  *v = strtod(s, &end);
+  if (end == s || *end || !(*v >= 0))
+    return wg_error(WG_EINVAL, "wetgran-orderparam", "option %s: '%s' is not a number >= 0", opt, s);
+  return WG_OK;
+}
+
+int main(int argc, char **argv)
+{
+  thresholds th = default_thresholds;
+  int do_calibrate = 0;
+  const char **files = calloc((size_t)argc, sizeof *files);
+  size_t nf = 0;
+  for (int a = 1; a < argc; a++) {
+    const char *o = argv[a];
+    if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
+      usage(stdout);
+      free(files);
+      return 0;
+    }
+    if (!strcmp(o, "--calibrate")) do_calibrate = 1;
+    else if ((!strcmp(o, "--t-sf") || !strcmp(o, "--t-fg") || !strcmp(o, "--dn")) && a + 1 < argc) {
+      double *dst = !strcmp(o, "--t-sf") ? &th.t_sf : !strcmp(o, "--t-fg") ? &th.t_fg : &th.dn;
+      if (parse_double(o, argv[++a], dst) != WG_OK) {
+        free(files);
+        return 2;
+      }
+    } else if (o[0] == '-') {
+      fprintf(stderr, "wetgran-orderparam: unknown option '%s' (see --help)\n", o);
+      free(files);
+      return 2;
+    } else {
+      files[nf++] = o;
+    }
+  }
+  if (nf == 0) {
+    usage(stderr);
+    free(files);
+    return 2;
+  }
+  wg_h5_quiet();
+  row *rows = calloc(nf, sizeof *rows);
+  int st = WG_OK;
+  for (size_t i = 0; i < nf && st == WG_OK; i++) st = measure(files[i], &rows[i]);
+  if (st == WG_OK) {
+    if (do_calibrate) {
+      calibrate(rows, nf, &th);
+      printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\n", nf, th.t_sf, th.t_fg, th.dn);
+    }
+    printf("file\tgamma\testar\testar_d\te_cb\teps\tt0\tt1\tstationary\tdrift\ttg\ttg_err\t"
+           "tg_dense\ttg_dilute\tdn_cb\tdn_area\tlabel\n");
+    for (size_t i = 0; i < nf; i++) {
+      row *r = &rows[i];
+      label(r, &th);
+      if (!r->stationary)
+        fprintf(stderr, "wetgran-orderparam: %s: not stationary in [%g, %g] (T_g drifts by %.0f %%)\n",
+                r->file, r->t0, r->t1, 100 * r->drift);
+      printf("%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%d\t%.3g\t%.6g\t%.3g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n",
+             r->file, r->gamma, r->estar, r->estar_d, r->e_cb, r->eps, r->t0, r->t1, r->stationary,
+             r->drift, r->tg, r->tg_err, r->tg_dense, r->tg_dilute, r->dn_cb, r->dn_area, r->label);
+    }
+  }
+  free(rows);
+  free(files);
+  return st == WG_OK ? 0 : 1;
+}

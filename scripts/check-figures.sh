@@ -1,0 +1,34 @@
+#!/bin/bash
+# Compares every experiments/<id>/out/<profile>/results.tsv with data/reference/<id>.tsv:
+# |value - reference| must lie within the profile's tolerance.  Names figure, key, value and
+# band on failure; exits non-zero if any key fails or a results file is missing.
+# Usage: scripts/check-figures.sh [quick|full]
+set -u
+profile=${1:-quick}
+top=$(cd "$(dirname "$0")/.." && pwd)
+col=3; [ "$profile" = full ] && col=4
+status=0 checked=0 passed=0 failed=0
+for ref in "$top"/data/reference/*.tsv; do
+  id=$(basename "$ref" .tsv)
+  res="$top/experiments/$id/out/$profile/results.tsv"
+  if [ ! -e "$res" ]; then
+    echo "FAIL  $id: no $res (run: make $id PROFILE=$profile)"; status=1; failed=$((failed + 1)); continue
+  fi
+  while IFS=$'\t' read -r key value tq tf _; do
+    case "$key" in ''|\#*) continue;; esac
+    tol=$tq; [ "$profile" = full ] && tol=$tf
+    got=$(awk -F'\t' -v k="$key" '$1 == k { print $2; exit }' "$res")
+    checked=$((checked + 1))
+    if [ -z "$got" ]; then
+      echo "FAIL  $id: key $key missing from $res"; status=1; failed=$((failed + 1)); continue
+    fi
+    if awk -v g="$got" -v v="$value" -v t="$tol" 'BEGIN { d = g - v; if (d < 0) d = -d; exit !(g == g + 0 && d <= t) }'; then
+      echo "ok    $id: $key = $got within $value +- $tol ($profile)"; passed=$((passed + 1))
+    else
+      echo "FAIL  $id: $key = $got outside $value +- $tol ($profile)"; status=1; failed=$((failed + 1))
+    fi
+  done < "$ref"
+done
+echo "check-figures ($profile): $checked keys checked"
+echo "$passed passed, $failed failed"
+exit $status
