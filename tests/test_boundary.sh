@@ -4,14 +4,7 @@
 # fits must recover it within half a grid spacing, and bad tables must be refused clearly.
 set -u
 tool=${WG_BIN:?}/wetgran-boundary
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-check() { # check "description" command...
-  local what=$1; shift
-  if "$@"; then passed=$((passed + 1)); echo "ok    $what"
-  else failed=$((failed + 1)); echo "FAIL  $what"; fi
-}
+. "$(dirname "$0")/checks.sh"
 # awk_ok 'condition on the file's fields' FILE: true when FILE has data rows and every data
 # row (after the header) satisfies the condition
 awk_ok() { awk -F'\t' -v bad=0 "NR > 1 { n++; if (!($1)) bad++ } END { exit !(n > 0 && bad == 0) }" "$2"; }
@@ -164,5 +157,4 @@ check "unknown option: exit 2" test "$rc" -eq 2
 "$tool" --fit-vertical f "$tmp/grid.tsv" > /dev/null 2>&1; rc=$?
 check "--fit-vertical without A:B: exit 2" test "$rc" -eq 2
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -4,14 +4,7 @@
 set -u
 run=${WG_BIN:?}/wetgran-run
 scenes=$(cd "$(dirname "$0")/../sim/scenes" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-check() { # check "description" command...
-  local what=$1; shift
-  if "$@"; then passed=$((passed + 1)); echo "ok    $what"
-  else failed=$((failed + 1)); echo "FAIL  $what"; fi
-}
+. "$(dirname "$0")/checks.sh"
 
 check "--help lists the scene keys" bash -c "'$run' --help | grep -q 'estar'"
 check "--version answers" bash -c "'$run' --version | grep -q wetgran-run"
@@ -61,5 +54,4 @@ runin "$tmp/m" seed=3 --no-volatile --abort-after-checkpoint 1
 runin "$tmp/m" seed=4 --no-volatile; rc=$?
 check "a checkpoint of another configuration is refused" bash -c "[ $rc -ne 0 ] && grep -q 'different configuration' '$tmp/m/err'"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary

@@ -5,14 +5,7 @@
 set -u
 bin=${WG_BIN:?}
 scenes=$(cd "$(dirname "$0")/../sim/scenes" && pwd)
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-passed=0 failed=0
-check() {
-  local what=$1; shift
-  if "$@"; then passed=$((passed + 1)); echo "ok    $what"
-  else failed=$((failed + 1)); echo "FAIL  $what"; fi
-}
+. "$(dirname "$0")/checks.sh"
 small="n=300 lx=100 t_end=300 profile_start=150 profile_bins=25 dt_series=1 dt_checkpoint=0"
 "$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=0.5 -q -o "$tmp/cold.h5" 2>/dev/null
 "$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=2.5 -q -o "$tmp/hot.h5" 2>/dev/null
@@ -43,5 +36,4 @@ check "--calibrate puts the fluid/gas cut between the two runs' temperatures ($t
   awk -v c="$tfg" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
 "$bin/wetgran-orderparam" "$tmp/none.h5" > /dev/null 2> "$tmp/err"; rc=$?
 check "missing run file: non-zero exit, file named" bash -c "[ $rc -ne 0 ] && grep -q none.h5 '$tmp/err'"
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+summary
