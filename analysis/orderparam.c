@@ -308,6 +308,43 @@ static void calibrate(const row *rows, size_t n, thresholds *th)
   free(dn);
 }
 
+/* Inflection point of T_g along a scan in E* (Fig. 3.29): the middle of the segment over
+   which log10 T_g rises most steeply against log10 E*; the error is half that segment.
+   With inelastic collisions T_g has no jump between fluid and gas, and the thesis takes
+   this point as the boundary (App. 3.A.1.2). */
+static int inflection(const row *rows, size_t n)
+{
+  size_t *order = malloc(sizeof *order * n);
+  if (!order) return WG_ENOMEM;
+  size_t m = 0;
+  for (size_t i = 0; i < n; i++)
+    if (rows[i].tg > 0 && rows[i].estar > 0) order[m++] = i;
+  for (size_t i = 1; i < m; i++) /* by E*, a few dozen runs */
+    for (size_t j = i; j > 0 && rows[order[j - 1]].estar > rows[order[j]].estar; j--) {
+      size_t t = order[j];
+      order[j] = order[j - 1];
+      order[j - 1] = t;
+    }
+  double best = -INFINITY, lo = NAN, hi = NAN;
+  for (size_t k = 1; k < m; k++) {
+    const row *a = &rows[order[k - 1]], *b = &rows[order[k]];
+    if (b->estar == a->estar) continue;
+    double slope = (log10(b->tg) - log10(a->tg)) / (log10(b->estar) - log10(a->estar));
+    if (slope > best) {
+      best = slope;
+      lo = a->estar;
+      hi = b->estar;
+    }
+  }
+  free(order);
+  if (!isfinite(lo)) return wg_error(WG_EINVAL, "wetgran-orderparam", "--inflection needs runs at two E* at least");
+  double mid = sqrt(lo * hi);
+  printf("key\tvalue\terror\n");
+  printf("inflection_estar\t%.6g\t%.3g\n", mid, 0.5 * (hi - lo));
+  printf("inflection_slope\t%.4g\tnan\n", best);
+  return WG_OK;
+}
+
 static void usage(FILE *out)
 {
   fprintf(out,
@@ -335,7 +372,10 @@ static void usage(FILE *out)
           "                             log T_g over the homogeneous runs gives t_fg; a further\n"
           "                             cut of the colder class gives t_sf if its halves lie\n"
           "                             more than a decade apart.  The classes found go to\n"
-          "                             stderr, the thresholds to a '#' line before the table\n",
+          "                             stderr, the thresholds to a '#' line before the table\n"
+          "  --inflection               instead of the table: the E* where log T_g rises most\n"
+          "                             steeply along the runs given (a scan in E*), as\n"
+          "                             key/value/error rows (inelastic f-g boundary, Fig. 3.29)\n",
           DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
           default_thresholds.t_fg, default_thresholds.dn);
 }
@@ -352,7 +392,7 @@ static int parse_double(const char *opt, const char *s, double *v)
 int main(int argc, char **argv)
 {
   thresholds th = default_thresholds;
-  int do_calibrate = 0;
+  int do_calibrate = 0, do_inflection = 0;
   const char **files = calloc((size_t)argc, sizeof *files);
   size_t nf = 0;
   for (int a = 1; a < argc; a++) {
@@ -363,6 +403,7 @@ int main(int argc, char **argv)
       return 0;
     }
     if (!strcmp(o, "--calibrate")) do_calibrate = 1;
+    else if (!strcmp(o, "--inflection")) do_inflection = 1;
     else if ((!strcmp(o, "--t-sf") || !strcmp(o, "--t-fg") || !strcmp(o, "--dn")) && a + 1 < argc) {
       double *dst = !strcmp(o, "--t-sf") ? &th.t_sf : !strcmp(o, "--t-fg") ? &th.t_fg : &th.dn;
       if (parse_double(o, argv[++a], dst) != WG_OK) {
@@ -386,7 +427,9 @@ int main(int argc, char **argv)
   row *rows = calloc(nf, sizeof *rows);
   int st = WG_OK;
   for (size_t i = 0; i < nf && st == WG_OK; i++) st = measure(files[i], &rows[i]);
-  if (st == WG_OK) {
+  if (st == WG_OK && do_inflection) {
+    st = inflection(rows, nf);
+  } else if (st == WG_OK) {
     if (do_calibrate) {
       calibrate(rows, nf, &th);
       printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\n", nf, th.t_sf, th.t_fg, th.dn);

@@ -9,7 +9,6 @@ SCENES := $(TOP)/sim/scenes
 SHELL := /bin/bash
 .SHELLFLAGS := -e -o pipefail -c
 .DELETE_ON_ERROR:
-.SECONDARY:
 
 # parameters of the profile: one file of key=value words, a prerequisite of every run
 CONF := $(PROFILE).conf

@@ -34,6 +34,9 @@ check "settled runs are not flagged" bash -c "! grep -q 'not stationary' '$tmp/o
 tfg=$(awk -F"\t" "NR == 1 { print \$4 }" "$tmp/cal.tsv")
 check "--calibrate puts the fluid/gas cut between the two runs' temperatures ($tfg)" \
   awk -v c="$tfg" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
+"$bin/wetgran-orderparam" --inflection "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/inf.tsv"
+check "--inflection of a two-run scan: the geometric middle sqrt(0.5 * 2.5) +- 1" \
+  awk -F'\t' '$1 == "inflection_estar" { d = $2 - sqrt(1.25); ok = (d < 1e-4 && d > -1e-4 && $3 == 1) } END { exit !ok }' "$tmp/inf.tsv"
 "$bin/wetgran-orderparam" "$tmp/none.h5" > /dev/null 2> "$tmp/err"; rc=$?
 check "missing run file: non-zero exit, file named" bash -c "[ $rc -ne 0 ] && grep -q none.h5 '$tmp/err'"
 summary

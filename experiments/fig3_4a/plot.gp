@@ -5,9 +5,9 @@
 color(l) = l eq "s" ? 0x909090 : l eq "f" ? 0x3070d0 : l eq "g" ? 0xf0a030 : \
            l eq "fgc" ? 0xffffff : l eq "sfc" ? 0xd0d0ff : l eq "sgc" ? 0xffe0c0 : 0xff0000
 fit_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc\" { print $2 }' %s", res)))
-stats op using 3 every ::2 nooutput
+stats op using 3 every ::1 nooutput
 xmin = STATS_min / 1.3; xmax = STATS_max * 1.3
-stats op using 2 every ::2 nooutput
+stats op using 2 every ::1 nooutput
 ymax = STATS_max * 1.1
 do for [k = 1:2] {
   reset
@@ -22,8 +22,8 @@ do for [k = 1:2] {
   set arrow 1 from fit_x, graph 0.99 to fit_x, graph 0.92 head filled lw 2 lc rgb "black"
   set label 1 sprintf("f-fgc: E* = %.3g", fit_x) at fit_x * 1.03, graph 0.96 left
   set samples 200
-  plot op using 3:2:(color(strcol(17))) every ::2 with points pt 5 ps 2.5 lc rgb variable notitle, \
-       op using 3:2 every ::2 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; blue f, white fgc, orange g)", \
+  plot op using 3:2:(color(strcol(17))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
+       op using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; blue f, white fgc, orange g)", \
        bd using 1:2 every ::1 with points pt 7 ps 0.8 lc rgb "red" title "boundary (Delaunay midpoints)", \
        2 * x * ecb / scrit title "A = s_{crit}" with lines lw 2 lc rgb "black"
 }

@@ -1,0 +1,226 @@
+/* wetgran-fit: least-squares fits of the forms the thesis draws through its data, with
+   GSL's nonlinear least squares (trust region, Levenberg-Marquardt).  Reads a TSV table,
+   prints key, value, error rows (errors from the covariance matrix scaled by the reduced
+   chi^2, i.e. from the scatter of the data).
+     critical:  y = a (xc - x)^beta  for x < xc   (order parameter near a transition, Fig. 3.31)
+     line:      y = a + b x                       (transition energies against E_cb, Fig. 3.5) */
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multifit_nlinear.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_COLS 64
+#define MAX_ITER 500
+#define XTOL 1e-10
+#define GTOL 1e-10
+#define FTOL 0.0
+
+typedef struct data {
+  size_t n;
+  double *x, *y;
+} data;
+
+/* critical: p = (a, xc, beta) */
+static int critical_f(const gsl_vector *p, void *d_, gsl_vector *r)
+{
+  const data *d = d_;
+  double a = gsl_vector_get(p, 0), xc = gsl_vector_get(p, 1), b = gsl_vector_get(p, 2);
+  for (size_t i = 0; i < d->n; i++) {
+    double u = xc - d->x[i];
+    double model = u > 0 ? a * pow(u, b) : 0;
+    gsl_vector_set(r, i, model - d->y[i]);
+  }
+  return GSL_SUCCESS;
+}
+
+static int critical_df(const gsl_vector *p, void *d_, gsl_matrix *J)
+{
+  const data *d = d_;
+  double a = gsl_vector_get(p, 0), xc = gsl_vector_get(p, 1), b = gsl_vector_get(p, 2);
+  for (size_t i = 0; i < d->n; i++) {
+    double u = xc - d->x[i];
+    double ub = u > 0 ? pow(u, b) : 0;
+    gsl_matrix_set(J, i, 0, ub);
+    gsl_matrix_set(J, i, 1, u > 0 ? a * b * ub / u : 0);
+    gsl_matrix_set(J, i, 2, u > 0 ? a * ub * log(u) : 0);
+  }
+  return GSL_SUCCESS;
+}
+
+static int line_f(const gsl_vector *p, void *d_, gsl_vector *r)
+{
+  const data *d = d_;
+  for (size_t i = 0; i < d->n; i++)
+    gsl_vector_set(r, i, gsl_vector_get(p, 0) + gsl_vector_get(p, 1) * d->x[i] - d->y[i]);
+  return GSL_SUCCESS;
+}
+
+static int line_df(const gsl_vector *p, void *d_, gsl_matrix *J)
+{
+  (void)p;
+  const data *d = d_;
+  for (size_t i = 0; i < d->n; i++) {
+    gsl_matrix_set(J, i, 0, 1);
+    gsl_matrix_set(J, i, 1, d->x[i]);
+  }
+  return GSL_SUCCESS;
+}
+
+/* Reads columns xname, yname of a TSV (header line; '#' lines skipped), keeping rows with
+   xmin <= x <= xmax and finite values. */
+static int read_table(const char *path, const char *xname, const char *yname, double xmin,
+                      double xmax, data *d)
+{
+  FILE *f = strcmp(path, "-") ? fopen(path, "r") : stdin;
+  if (!f) {
+    fprintf(stderr, "wetgran-fit: %s: cannot open\n", path);
+    return 1;
+  }
+  char line[8192];
+  int xc = -1, yc = -1, lineno = 0, header = 0;
+  size_t cap = 0;
+  d->n = 0;
+  d->x = d->y = NULL;
+  while (fgets(line, sizeof line, f)) {
+    lineno++;
+    line[strcspn(line, "\r\n")] = 0;
+    if (line[0] == '#' || line[0] == 0) continue;
+    char *field[MAX_COLS];
+    int nf = 0;
+    for (char *tok = strtok(line, "\t"); tok && nf < MAX_COLS; tok = strtok(NULL, "\t")) field[nf++] = tok;
+    if (!header) {
+      for (int k = 0; k < nf; k++) {
+        if (!strcmp(field[k], xname)) xc = k;
+        if (!strcmp(field[k], yname)) yc = k;
+      }
+      if (xc < 0 || yc < 0) {
+        fprintf(stderr, "wetgran-fit: %s:%d: no column '%s' in the header\n", path, lineno,
+                xc < 0 ? xname : yname);
+        if (f != stdin) fclose(f);
+        return 1;
+      }
+      header = 1;
+      continue;
+    }
+    if (xc >= nf || yc >= nf) {
+      fprintf(stderr, "wetgran-fit: %s:%d: too few fields\n", path, lineno);
+      if (f != stdin) fclose(f);
+      return 1;
+    }
+    char *e1, *e2;
+    double x = strtod(field[xc], &e1), y = strtod(field[yc], &e2);
+    if (*e1 || *e2) {
+      fprintf(stderr, "wetgran-fit: %s:%d: '%s' or '%s' is not a number\n", path, lineno,
+              field[xc], field[yc]);
+      if (f != stdin) fclose(f);
+      return 1;
+    }
+    if (!isfinite(x) || !isfinite(y) || x < xmin || x > xmax) continue;
+    if (d->n == cap) {
+      cap = cap ? 2 * cap : 64;
+      d->x = realloc(d->x, sizeof *d->x * cap);
+      d->y = realloc(d->y, sizeof *d->y * cap);
+      if (!d->x || !d->y) return 1;
+    }
+    d->x[d->n] = x;
+    d->y[d->n] = y;
+    d->n++;
+  }
+  if (f != stdin) fclose(f);
+  return 0;
+}
+
+static void usage(FILE *out)
+{
+  fprintf(out,
+          "Usage: wetgran-fit --model critical|line --x COL --y COL [--xmin X] [--xmax X]\n"
+          "                   [--prefix P] [--guess a,xc,beta] TABLE|-\n"
+          "Least-squares fit (GSL trust-region Levenberg-Marquardt) of column y against x:\n"
+          "  critical  y = a (xc - x)^beta for x < xc, 0 beyond (Fig. 3.31)\n"
+          "  line      y = a + b x (Fig. 3.5)\n"
+          "Prints 'key value error' rows: P_a, P_xc, P_beta (or P_a, P_b), P_n (points) and\n"
+          "P_chi2_dof; errors are the covariance errors scaled by sqrt(chi^2/dof).\n");
+}
+
+int main(int argc, char **argv)
+{
+  const char *model = NULL, *xname = NULL, *yname = NULL, *path = NULL, *prefix = "fit";
+  double xmin = -INFINITY, xmax = INFINITY, guess[3] = {NAN, NAN, NAN};
+  for (int a = 1; a < argc; a++) {
+    const char *o = argv[a];
+    if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
+      usage(stdout);
+      return 0;
+    }
+    if (a + 1 < argc && !strcmp(o, "--model")) model = argv[++a];
+    else if (a + 1 < argc && !strcmp(o, "--x")) xname = argv[++a];
+    else if (a + 1 < argc && !strcmp(o, "--y")) yname = argv[++a];
+    else if (a + 1 < argc && !strcmp(o, "--xmin")) xmin = atof(argv[++a]);
+    else if (a + 1 < argc && !strcmp(o, "--xmax")) xmax = atof(argv[++a]);
+    else if (a + 1 < argc && !strcmp(o, "--prefix")) prefix = argv[++a];
+    else if (a + 1 < argc && !strcmp(o, "--guess"))
+      sscanf(argv[++a], "%lf,%lf,%lf", &guess[0], &guess[1], &guess[2]);
+    else if (o[0] == '-' && o[1]) {
+      fprintf(stderr, "wetgran-fit: unknown or incomplete option '%s' (see --help)\n", o);
+      return 2;
+    } else path = o;
+  }
+  int critical = model && !strcmp(model, "critical"), linear = model && !strcmp(model, "line");
+  if ((!critical && !linear) || !xname || !yname || !path) {
+    usage(stderr);
+    return 2;
+  }
+  data d;
+  if (read_table(path, xname, yname, xmin, xmax, &d)) return 1;
+  size_t p = critical ? 3 : 2;
+  if (d.n <= p) {
+    fprintf(stderr, "wetgran-fit: %s: %zu usable points, need more than %zu\n", path, d.n, p);
+    return 1;
+  }
+  double start[3];
+  if (critical) {
+    double xhi = d.x[0], ymax = 0;
+    for (size_t i = 0; i < d.n; i++) {
+      if (d.x[i] > xhi) xhi = d.x[i];
+      if (d.y[i] > ymax) ymax = d.y[i];
+    }
+    start[0] = isfinite(guess[0]) ? guess[0] : ymax;
+    start[1] = isfinite(guess[1]) ? guess[1] : xhi * 1.05;
+    start[2] = isfinite(guess[2]) ? guess[2] : 0.5;
+  } else {
+    start[0] = 0;
+    start[1] = 0;
+  }
+  gsl_set_error_handler_off();
+  gsl_multifit_nlinear_fdf fdf = {critical ? critical_f : line_f, critical ? critical_df : line_df,
+                                  NULL, d.n, p, &d, 0, 0, 0};
+  gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
+  gsl_multifit_nlinear_workspace *w =
+      gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &fp, d.n, p);
+  gsl_vector_view x0 = gsl_vector_view_array(start, p);
+  int info, st = gsl_multifit_nlinear_init(&x0.vector, &fdf, w);
+  if (st == GSL_SUCCESS)
+    st = gsl_multifit_nlinear_driver(MAX_ITER, XTOL, GTOL, FTOL, NULL, NULL, &info, w);
+  gsl_matrix *cov = gsl_matrix_alloc(p, p);
+  gsl_matrix *J = gsl_multifit_nlinear_jac(w);
+  gsl_multifit_nlinear_covar(J, 0.0, cov);
+  double chi2;
+  gsl_blas_ddot(gsl_multifit_nlinear_residual(w), gsl_multifit_nlinear_residual(w), &chi2);
+  double dof = (double)(d.n - p), scale = sqrt(chi2 / dof > 0 ? chi2 / dof : 0);
+  const char *names[2][3] = {{"a", "b", ""}, {"a", "xc", "beta"}};
+  if (st != GSL_SUCCESS)
+    fprintf(stderr, "wetgran-fit: %s: the fit did not converge (%s)\n", path, gsl_strerror(st));
+  printf("key\tvalue\terror\n");
+  for (size_t k = 0; k < p; k++)
+    printf("%s_%s\t%.6g\t%.3g\n", prefix, names[critical][k], gsl_vector_get(w->x, k),
+           scale * sqrt(gsl_matrix_get(cov, k, k)));
+  printf("%s_n\t%zu\tnan\n%s_chi2_dof\t%.4g\tnan\n", prefix, d.n, prefix, chi2 / dof);
+  gsl_matrix_free(cov);
+  gsl_multifit_nlinear_free(w);
+  free(d.x);
+  free(d.y);
+  return st == GSL_SUCCESS ? 0 : 1;
+}

@@ -1,0 +1,28 @@
+# Six strips like Fig. 3.1: colour = log10(kinetic energy / E_cb); filled: at least one bridge,
+# ring: none.  Each strip is titled with the caption's state, its driving and the label the
+# order parameters give.
+n = words(states)
+lab(s) = system(sprintf("awk -F'\\t' '$1 ~ /\\/%s\\.h5$/ { printf \"%%s  (Gamma = %%s, E* = %%s; T_g/E_{cb} = %%.3g; order parameters: %%s)\", \"%s\", $2, $3, $11, $17 }' %s", s, s, op))
+do for [k = 1:2] {
+  reset
+  if (k == 1) { set terminal pngcairo size 1500, 170 * n + 110 font ",11"; set output png } \
+  else { set terminal pdfcairo size 15in, (1.7 * n + 1.1)*1in font ",11"; set output pdf }
+  set multiplot layout n,1
+  set size ratio -1
+  set palette defined (-4 "#202080", -2 "#2090f0", 0 "#30c030", 1 "#f0d020", 2 "#e03020")
+  set cbrange [-4:2]
+  set xrange [0:400]; set yrange [-0.5:9.5]
+  unset ytics
+  set style fill solid 1.0 noborder
+  do for [i = 1:n] {
+    s = word(states, i)
+    set title lab(s)
+    if (i == n) { set colorbox horizontal user origin 0.3, 0.04 size 0.4, 0.015; set cblabel "log_{10}(E_{kin} / E_{cb})" } \
+    else { unset colorbox }
+    f = out.'/'.s.'.frame.tsv'
+    # an undefined x (not radius) is what makes gnuplot skip a point
+    plot f using ($8 > 0 ? $2 : 1/0):3:($6/2):(log10($7/ecb + 1e-12)) with circles fill solid 1.0 lc palette notitle, \
+         f using ($8 == 0 ? $2 : 1/0):3:($6/2):(log10($7/ecb + 1e-12)) with circles fill empty lw 1 lc palette notitle
+  }
+  unset multiplot
+}

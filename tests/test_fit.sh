@@ -1,0 +1,30 @@
+#!/bin/bash
+# wetgran-fit recovers known parameters from noisy synthetic data (the critical power law of
+# Fig. 3.31 and the straight line of Fig. 3.5) within three of its own error bars, and refuses
+# bad tables.
+set -u
+fit=${WG_BIN:?}/wetgran-fit
+. "$(dirname "$0")/checks.sh"
+within() { awk -v v="$1" -v e="$2" -v t="$3" 'BEGIN { d = v - t; if (d < 0) d = -d; exit !(e > 0 && d <= 3 * e) }'; }
+get() { awk -F'\t' -v k="$1" '$1 == k { print $2 "\t" $3 }' "$2"; }
+awk 'BEGIN { srand(3); print "estar\tdn"; for (i = 0; i < 20; i++) { x = 1 + i * 0.045;
+  print x "\t" 0.7 * (1.97 - x)^0.37 * (1 + 0.02 * (rand() - 0.5)) }
+  for (i = 0; i < 4; i++) print 2.0 + 0.1 * i "\t0" }' > "$tmp/crit.tsv"
+"$fit" --model critical --x estar --y dn --prefix c "$tmp/crit.tsv" > "$tmp/c.out"
+read -r v e < <(get c_beta "$tmp/c.out")
+check "critical exponent 0.37 recovered: $v +- $e" within "$v" "$e" 0.37
+read -r v e < <(get c_xc "$tmp/c.out")
+check "critical point 1.97 recovered: $v +- $e" within "$v" "$e" 1.97
+check "points counted (24)" test "$(get c_n "$tmp/c.out" | cut -f1)" = 24
+"$fit" --model critical --x estar --y dn --xmax 1.5 --prefix c "$tmp/crit.tsv" > "$tmp/c2.out"
+check "--xmax keeps only x <= 1.5 (12 points)" test "$(get c_n "$tmp/c2.out" | cut -f1)" = 12
+awk 'BEGIN { srand(5); print "e\tt"; for (i = 1; i <= 12; i++) print 0.1 * i "\t" 0.2 + 1.5 * 0.1 * i + 0.01 * (rand() - 0.5) }' > "$tmp/line.tsv"
+"$fit" --model line --x e --y t --prefix l "$tmp/line.tsv" > "$tmp/l.out"
+read -r v e < <(get l_b "$tmp/l.out")
+check "slope 1.5 recovered: $v +- $e" within "$v" "$e" 1.5
+"$fit" --model line --x e --y nope "$tmp/line.tsv" > /dev/null 2> "$tmp/err"; rc=$?
+check "missing column: non-zero exit naming it" bash -c "[ $rc -ne 0 ] && grep -q \"'nope'\" '$tmp/err'"
+printf 'x\ty\n1\t2\n2\tabc\n' > "$tmp/bad.tsv"
+"$fit" --model line --x x --y y "$tmp/bad.tsv" > /dev/null 2> "$tmp/err"; rc=$?
+check "non-number: non-zero exit naming file and line 3" bash -c "[ $rc -ne 0 ] && grep -q 'bad.tsv:3' '$tmp/err'"
+summary
