@@ -4,6 +4,7 @@
    parts, and a label s, f, g, sfc, sgc or fgc.  --calibrate derives the label thresholds
    from the runs given (Otsu's criterion on their distributions). */
 #include <math.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -345,6 +346,67 @@ static int inflection(const row *rows, size_t n)
   return WG_OK;
 }
 
+/* The table as an HDF5 file: one dataset per column, with units and descriptions. */
+static int write_h5(const char *path, const row *rows, size_t n, const thresholds *th)
+{
+  char tmp[4200];
+  snprintf(tmp, sizeof tmp, "%s.tmp", path);
+  hid_t f = wg_h5_create(tmp);
+  if (f < 0) return WG_EIO;
+  double *v = malloc(sizeof *v * (n ? n : 1));
+  if (!v) {
+    wg_h5_close(f);
+    return WG_ENOMEM;
+  }
+  struct { const char *name, *unit, *desc; size_t off; } cols[] = {
+      {"gamma", "1", "Gamma = A w^2 / g", offsetof(row, gamma)},
+      {"estar", "1", "E* = m (A w)^2 / (2 E_cb)", offsetof(row, estar)},
+      {"estar_d", "1", "E*_d = (A w)^2 / (2 g d)", offsetof(row, estar_d)},
+      {"e_cb", "m g d", "capillary bridge energy", offsetof(row, e_cb)},
+      {"eps", "1", "restitution", offsetof(row, eps)},
+      {"t0", "sqrt(d/g)", "start of the averaging window", offsetof(row, t0)},
+      {"t1", "sqrt(d/g)", "end of the averaging window", offsetof(row, t1)},
+      {"drift", "1", "relative difference of the window's halves", offsetof(row, drift)},
+      {"tg", "E_cb", "mean T_g / E_cb over the window (dry: m g d)", offsetof(row, tg)},
+      {"tg_err", "E_cb", "error of tg from block means", offsetof(row, tg_err)},
+      {"tg_dense", "E_cb", "T_g / E_cb of the densest fifth of the bins", offsetof(row, tg_dense)},
+      {"tg_dilute", "E_cb", "T_g / E_cb of the most dilute fifth of the bins", offsetof(row, tg_dilute)},
+      {"dn_cb", "d^-(D-1)", "Eq. 3.3: max - min of the bridge density", offsetof(row, dn_cb)},
+      {"dn_area", "1", "max - min of the packing fraction", offsetof(row, dn_area)},
+  };
+  hsize_t dims[1] = {n};
+  int st = WG_OK;
+  for (size_t c = 0; c < sizeof cols / sizeof *cols && st == WG_OK; c++) {
+    for (size_t i = 0; i < n; i++) v[i] = *(const double *)((const char *)&rows[i] + cols[c].off);
+    char name[64];
+    snprintf(name, sizeof name, "/orderparam/%s", cols[c].name);
+    st = wg_h5_write(f, name, H5T_NATIVE_DOUBLE, 1, dims, v, cols[c].unit, cols[c].desc);
+  }
+  int *iv = malloc(sizeof *iv * (n ? n : 1));
+  for (size_t i = 0; iv && i < n; i++) iv[i] = rows[i].stationary;
+  if (st == WG_OK && iv)
+    st = wg_h5_write(f, "/orderparam/stationary", H5T_NATIVE_INT, 1, dims, iv, "1", "1 if the window is stationary");
+  free(iv);
+  const char **lab = malloc(sizeof *lab * (n ? n : 1)), **file = malloc(sizeof *file * (n ? n : 1));
+  for (size_t i = 0; lab && file && i < n; i++) {
+    lab[i] = rows[i].label;
+    file[i] = rows[i].file;
+  }
+  if (st == WG_OK && lab && file && n > 0) {
+    st |= wg_h5_attr_strings(f, "/orderparam", "label", (int)n, lab);
+    st |= wg_h5_attr_strings(f, "/orderparam", "file", (int)n, file);
+  }
+  free(lab);
+  free(file);
+  double t[3] = {th->t_sf, th->t_fg, th->dn};
+  if (st == WG_OK) st = wg_h5_attr_doubles(f, "/orderparam", "thresholds_tsf_tfg_dn", 3, t);
+  free(v);
+  if (wg_h5_close(f) != WG_OK) st = WG_EIO;
+  if (st != WG_OK) return wg_error(WG_EIO, tmp, "order parameters not written");
+  if (rename(tmp, path) != 0) return wg_error(WG_EIO, path, "cannot rename from %s", tmp);
+  return WG_OK;
+}
+
 static void usage(FILE *out)
 {
   fprintf(out,
@@ -373,6 +435,8 @@ static void usage(FILE *out)
           "                             cut of the colder class gives t_sf if its halves lie\n"
           "                             more than a decade apart.  The classes found go to\n"
           "                             stderr, the thresholds to a '#' line before the table\n"
+          "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
+          "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
           "                             steeply along the runs given (a scan in E*), as\n"
           "                             key/value/error rows (inelastic f-g boundary, Fig. 3.29)\n",
@@ -393,6 +457,7 @@ int main(int argc, char **argv)
 {
   thresholds th = default_thresholds;
   int do_calibrate = 0, do_inflection = 0;
+  const char *h5_out = NULL;
   const char **files = calloc((size_t)argc, sizeof *files);
   size_t nf = 0;
   for (int a = 1; a < argc; a++) {
@@ -404,6 +469,7 @@ int main(int argc, char **argv)
     }
     if (!strcmp(o, "--calibrate")) do_calibrate = 1;
     else if (!strcmp(o, "--inflection")) do_inflection = 1;
+    else if (!strcmp(o, "--h5") && a + 1 < argc) h5_out = argv[++a];
     else if ((!strcmp(o, "--t-sf") || !strcmp(o, "--t-fg") || !strcmp(o, "--dn")) && a + 1 < argc) {
       double *dst = !strcmp(o, "--t-sf") ? &th.t_sf : !strcmp(o, "--t-fg") ? &th.t_fg : &th.dn;
       if (parse_double(o, argv[++a], dst) != WG_OK) {
@@ -446,6 +512,7 @@ int main(int argc, char **argv)
              r->file, r->gamma, r->estar, r->estar_d, r->e_cb, r->eps, r->t0, r->t1, r->stationary,
              r->drift, r->tg, r->tg_err, r->tg_dense, r->tg_dilute, r->dn_cb, r->dn_area, r->label);
     }
+    if (h5_out) st = write_h5(h5_out, rows, nf, &th);
   }
   free(rows);
   free(files);

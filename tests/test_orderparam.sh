@@ -34,6 +34,10 @@ check "settled runs are not flagged" bash -c "! grep -q 'not stationary' '$tmp/o
 tfg=$(awk -F"\t" "NR == 1 { print \$4 }" "$tmp/cal.tsv")
 check "--calibrate puts the fluid/gas cut between the two runs' temperatures ($tfg)" \
   awk -v c="$tfg" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
+"$bin/wetgran-orderparam" --h5 "$tmp/op.h5" "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2>&1
+h5dump -d /orderparam/tg -y -o "$tmp/tg.txt" "$tmp/op.h5" > /dev/null 2>&1
+check "--h5 writes the same T_g/E_cb as the table" \
+  awk -v a="$(col cold tg)" -v b="$(tr -s ', \n' '  ' < "$tmp/tg.txt" | awk '{ print $1 }')" 'BEGIN { exit !(a > 0 && (a - b) / a < 1e-5 && (b - a) / a < 1e-5) }'
 "$bin/wetgran-orderparam" --inflection "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/inf.tsv"
 check "--inflection of a two-run scan: the geometric middle sqrt(0.5 * 2.5) +- 1" \
   awk -F'\t' '$1 == "inflection_estar" { d = $2 - sqrt(1.25); ok = (d < 1e-4 && d > -1e-4 && $3 == 1) } END { exit !ok }' "$tmp/inf.tsv"
