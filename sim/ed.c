@@ -13,6 +13,7 @@
 enum { BOND_CAP_2D = 8, BOND_CAP_3D = 16 };
 /* Consecutive events at one instant beyond which a run is declared stuck. */
 #define STUCK_EVENTS 10000000ULL
+#define BURST_TIME 1e-4 /* [sqrt(d/g)]: 10^7 events in less than this is no physics */
 /* Without the TC model, the time scale of wall_min_speed [sqrt(d/g)]. */
 #define WALL_MIN_TIME 1e-12
 
@@ -499,13 +500,17 @@ int wg_ed_advance(wg_ed *s, double t_stop)
     long i = wg_evqueue_top(&s->queue);
     double t = s->key[i];
     if (!(t <= t_stop)) break;
-    if (t == s->now) {
+    /* a burst: events piling up within BURST_TIME of each other (same instant, or ulps
+       apart as in a rigid cluster of bonded grains) */
+    if (t - s->burst_start <= BURST_TIME) {
       if (++s->zero_time_run > STUCK_EVENTS)
         return wg_error(WG_ERANGE, "event loop",
-                        "more than %llu events at the same instant t = %.17g (particle %ld): "
-                        "the run is stuck", STUCK_EVENTS, t, i);
+                        "more than %llu events within %g of t = %.17g (particle %ld): the run is "
+                        "stuck (a rigid cluster or inelastic collapse)", STUCK_EVENTS, BURST_TIME,
+                        t, i);
     } else {
       s->zero_time_run = 0;
+      s->burst_start = t;
     }
     s->now = t;
     if (s->t_cell[i] <= s->t_phys[i]) {

@@ -89,7 +89,8 @@ typedef struct wg_ed {
   wg_ledger ledger;
   double virial;               /* sum over collisions of sigma_ij |J| (pressure, Eq. of state) */
   wg_wall_stats wall_stats;
-  unsigned long long zero_time_run; /* consecutive events at the same instant (stuck guard) */
+  unsigned long long zero_time_run; /* consecutive events within a burst (stuck guard) */
+  double burst_start;               /* time of the burst's first event */
   unsigned long long since_sync;    /* events since the last synchronisation */
   unsigned long long sync_interval; /* synchronise (and renumber) after this many events */
 } wg_ed;
