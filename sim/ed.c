@@ -14,6 +14,22 @@ enum { BOND_CAP_2D = 8, BOND_CAP_3D = 16 };
 /* Consecutive events at one instant beyond which a run is declared stuck. */
 #define STUCK_EVENTS 10000000ULL
 #define BURST_TIME 1e-4 /* [sqrt(d/g)]: 10^7 events in less than this is no physics */
+/* Collisions of a particle closer in time than this to its previous collision belong to one
+   instant: a rigid cluster of bonded grains (contacts closed, bridges taut) pressed by a
+   dissipative collision.  The TC model would keep them elastic and the cluster would ring
+   forever at one instant; they are made perfectly inelastic instead, which projects the
+   velocities onto the motions the cluster allows, a few sweeps per jam. */
+#define RIGID_TIME 1e-9 /* [sqrt(d/g)] */
+/* Normal speeds below this at a closed contact are rest: after a perfectly inelastic
+   collision the remaining u_n is round-off, which must not trigger another collision. */
+#define REST_SPEED 1e-10 /* [sqrt(g d)] */
+/* A bonded pair that reaches gap s_crit with a normal speed below this fraction of its
+   relative speed grazes the edge: a rotating taut bridge would bounce ever more often
+   (a particle sliding along the inside of a circle), so it leaves at this angle, the
+   normal speed taken from the tangential motion (energy and momentum are kept).  A rigid
+   cluster spinning on a taut bridge so sheds its spin within ~1/angle^2 reflections; the
+   normal energy handed over can rupture a bridge only if 1/2 mu u^2 > E_cb / angle^2. */
+#define GRAZING_ANGLE 0.05 /* [rad]: about pi / GRAZING_ANGLE reflections per revolution */
 /* Without the TC model, the time scale of wall_min_speed [sqrt(d/g)]. */
 #define WALL_MIN_TIME 1e-12
 
@@ -228,7 +244,7 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
   if (bdot < 0) {
     double c = r2 - sigma * sigma;
     if (c <= 0) {
-      consider(best, pr->now, WG_EV_COLLISION, j);
+      if (bdot < -REST_SPEED * sigma) consider(best, pr->now, WG_EV_COLLISION, j);
       return;
     }
     double disc = bdot * bdot - a * c;
@@ -241,9 +257,14 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
     double edge = sigma + s->s_crit;
     double c = r2 - edge * edge;
     double t;
-    if (c >= 0) {
-      if (bdot <= 0) return;
+    if (c >= 0 && bdot > REST_SPEED * edge) {
       t = 0;
+    } else if (c >= 0) {
+      /* on (or, by round-off, just beyond) the edge, moving in or at rest: back at the far
+         root, and not before the pair moves out faster than REST_SPEED (bdot grows as a t) */
+      if (a == 0) return;
+      double disc = bdot * bdot - a * c;
+      t = fmax((-bdot + sqrt(disc > 0 ? disc : 0)) / a, (REST_SPEED * edge - bdot) / a);
     } else {
       if (a == 0) return;
       double disc = bdot * bdot - a * c;
@@ -352,7 +373,8 @@ static void normal_kick(wg_ed *s, long i, long j, const double *n, double du)
 
 /* Contact of two hard particles with restitution (Eq. 2.3-2.6 for any masses):
    u_n -> -e u_n.  The TC model makes the collision elastic when either particle collided
-   less than tc ago.  An unbonded wet pair forms a bridge. */
+   less than tc ago, unless that was at the same instant (RIGID_TIME).  An unbonded wet pair
+   forms a bridge. */
 static int collide(wg_ed *s, long i, long j)
 {
   double n[3], dist;
@@ -360,7 +382,13 @@ static int collide(wg_ed *s, long i, long j)
   if (un >= 0) return WG_OK; /* already separating: nothing to do */
   double e = s->eps;
   if (s->t_last) {
-    if (s->now - s->t_last[i] < s->tc || s->now - s->t_last[j] < s->tc) e = 1;
+    double since = fmin(s->now - s->t_last[i], s->now - s->t_last[j]);
+    if (since <= RIGID_TIME) {
+      e = 0;
+      s->counts.rigid++;
+    } else if (since < s->tc) {
+      e = 1;
+    }
     s->t_last[i] = s->t_last[j] = s->now;
   }
   double mu = reduced_mass(s, i, j);
@@ -379,25 +407,42 @@ static int collide(wg_ed *s, long i, long j)
 
 /* A bonded pair separating through gap s_crit (thin-thread model): the bridge ruptures if
    the normal kinetic energy exceeds E_cb, taking exactly E_cb; otherwise the pair is
-   reflected back into the well without loss. */
+   reflected back into the well without loss (at no less than GRAZING_ANGLE). */
 static void bridge_edge(wg_ed *s, long i, long j)
 {
   double n[3], dist;
   double un = contact_normal(s, i, j, n, &dist);
   if (un <= 0) return;
   double mu = reduced_mass(s, i, j);
-  double un_after;
   if (0.5 * mu * un * un > s->e_cb) {
-    un_after = sqrt(un * un - 2 * s->e_cb / mu);
     bond_remove_one(s, i, j);
     bond_remove_one(s, j, i);
     ksum_add(&s->ledger.dissipated_rupt, s->e_cb);
     s->counts.ruptures++;
-  } else {
-    un_after = -un;
-    s->counts.reflections++;
+    normal_kick(s, i, j, n, sqrt(un * un - 2 * s->e_cb / mu) - un);
+    return;
   }
-  normal_kick(s, i, j, n, un_after - un);
+  s->counts.reflections++;
+  double dr[3], du[3] = {0, 0, 0};
+  pair_state(s, i, j, dr, du);
+  double u2 = dot(du, du, s->dim), u_min = GRAZING_ANGLE * sqrt(u2);
+  if (un >= u_min * (1 - 1e-9)) { /* (a pair that grazed before comes back at u_min) */
+    normal_kick(s, i, j, n, -2 * un);
+    return;
+  }
+  /* grazing: u_n -> -u_min, tangential part shrunk so that |u| is unchanged */
+  double ut2 = u2 - un * un, f = ut2 > 0 ? sqrt(fmax(u2 - u_min * u_min, 0) / ut2) : 0;
+  double kick[3] = {0, 0, 0};
+  for (int k = 0; k < s->dim; k++) {
+    double ut = du[k] - un * n[k];
+    kick[k] = (-u_min - un) * n[k] + (f - 1) * ut;
+  }
+  double ki = mu / wg_ed_mass(s, i), kj = mu / wg_ed_mass(s, j);
+  for (int k = 0; k < s->dim; k++) {
+    s->p[i].v[k] -= ki * kick[k];
+    s->p[j].v[k] += kj * kick[k];
+  }
+  s->counts.grazing++;
 }
 
 /* Reflection at a moving wall: the velocity relative to the wall reverses and shrinks by
@@ -613,7 +658,6 @@ int wg_ed_synchronize(wg_ed *s)
   for (long i = 0; i < s->n; i++)
     s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
   wg_evqueue_build(&s->queue);
-  s->zero_time_run = 0;
   s->since_sync = 0;
   return WG_OK;
 }

@@ -32,7 +32,9 @@ typedef enum {
 /* Counts of every event type; the ledger of energy. */
 typedef struct wg_counts {
   unsigned long long collisions, captures, ruptures, reflections, wall_hits, wall_enters,
-      cell_crossings, stale;  /* stale: popped predictions whose partner had moved on */
+      cell_crossings, stale,  /* stale: popped predictions whose partner had moved on */
+      rigid,                  /* collisions at one instant in a rigid cluster (RIGID_TIME) */
+      grazing;                /* bridge reflections raised to GRAZING_ANGLE */
 } wg_counts;
 
 /* Energy ledger [m g d], compensated (Kahan) sums. */

@@ -245,10 +245,11 @@ static int checkpoint_write(wg_run *run)
     st |= wg_h5_write(f, "state/nbond", H5T_NATIVE_UINT8, 1, d1, s->nbond, "1", "bridges per particle");
     st |= wg_h5_write(f, "state/bond", H5T_NATIVE_INT32, 1, db, s->bond, "1", "bridge partners, bond_cap per particle");
   }
-  unsigned long long counts[8] = {s->counts.collisions, s->counts.captures, s->counts.ruptures,
+  unsigned long long counts[10] = {s->counts.collisions, s->counts.captures, s->counts.ruptures,
                                   s->counts.reflections, s->counts.wall_hits, s->counts.wall_enters,
-                                  s->counts.cell_crossings, s->counts.stale};
-  hsize_t d8[1] = {8};
+                                  s->counts.cell_crossings, s->counts.stale, s->counts.rigid,
+                                   s->counts.grazing};
+  hsize_t d8[1] = {10};
   st |= wg_h5_write(f, "run/counts", H5T_NATIVE_ULLONG, 1, d8, counts, "1", "event counts");
   double ledger[10] = {s->ledger.injected_wall.s, s->ledger.injected_wall.c,
                        s->ledger.dissipated_coll.s, s->ledger.dissipated_coll.c,
@@ -352,10 +353,10 @@ static int checkpoint_load(wg_run *run)
     if (st == WG_OK)
       st = read_into(f, ck, "state/bond", H5T_NATIVE_INT32, s->bond, (hsize_t)n * (hsize_t)s->bond_cap);
   }
-  unsigned long long counts[8], ws[3];
+  unsigned long long counts[10], ws[3];
   double ledger[10];
   long long k[7];
-  if (st == WG_OK) st = read_into(f, ck, "run/counts", H5T_NATIVE_ULLONG, counts, 8);
+  if (st == WG_OK) st = read_into(f, ck, "run/counts", H5T_NATIVE_ULLONG, counts, 10);
   if (st == WG_OK) st = read_into(f, ck, "run/ledger", H5T_NATIVE_DOUBLE, ledger, 10);
   if (st == WG_OK) st = read_into(f, ck, "run/wall_stats", H5T_NATIVE_ULLONG, ws, 3);
   if (st == WG_OK) st = read_into(f, ck, "run/counters", H5T_NATIVE_LLONG, k, 7);
@@ -385,7 +386,8 @@ static int checkpoint_load(wg_run *run)
   wg_h5_close(f);
   if (st != WG_OK) return wg_error(WG_EIO, ck, "cannot read the checkpoint; rerun with --fresh");
 
-  s->counts = (wg_counts){counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7]};
+  s->counts = (wg_counts){counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7], counts[8],
+               counts[9]};
   s->wall_stats = (wg_wall_stats){ws[0], ws[1], ws[2]};
   run->k_series = k[0];
   run->k_snapshot = k[1];
@@ -675,6 +677,8 @@ static int write_run_file(wg_run *run, double wall_s)
       st |= wg_h5_attr_llong(g, ".", "cell_crossings", (long long)s->counts.cell_crossings);
       st |= wg_h5_attr_llong(g, ".", "wall_enters", (long long)s->counts.wall_enters);
       st |= wg_h5_attr_llong(g, ".", "stale_predictions", (long long)s->counts.stale);
+      st |= wg_h5_attr_llong(g, ".", "rigid_collisions", (long long)s->counts.rigid);
+      st |= wg_h5_attr_llong(g, ".", "grazing_reflections", (long long)s->counts.grazing);
       H5Gclose(g);
     }
   }
@@ -815,9 +819,11 @@ int wg_run_execute(wg_run *run)
   getrusage(RUSAGE_SELF, &ru);
   fprintf(stderr,
           "summary: events=%llu sim_time=%.10g wall_s=%.3f events_per_s=%.4g ledger_residual=%.3g"
-          " cell_crossings=%llu wall_enters=%llu peak_rss_kb=%ld engine_bytes_per_particle=%.0f\n",
+          " cell_crossings=%llu wall_enters=%llu rigid_collisions=%llu grazing_reflections=%llu"
+          " peak_rss_kb=%ld"
+          " engine_bytes_per_particle=%.0f\n",
           ev, s->now, wall_s, wall_s > 0 ? (double)ev / wall_s : 0, residual,
-          s->counts.cell_crossings, s->counts.wall_enters, ru.ru_maxrss,
+          s->counts.cell_crossings, s->counts.wall_enters, s->counts.rigid, s->counts.grazing, ru.ru_maxrss,
           (double)wg_ed_bytes(s) / (double)s->n);
   return WG_OK;
 }

@@ -54,4 +54,15 @@ runin "$tmp/m" seed=3 --no-volatile --abort-after-checkpoint 1
 runin "$tmp/m" seed=4 --no-volatile; rc=$?
 check "a checkpoint of another configuration is refused" bash -c "[ $rc -ne 0 ] && grep -q 'different configuration' '$tmp/m/err'"
 
+# Regression: this inelastic wet run jammed at t = 526.12 (four bonded disks, contacts closed
+# and a bridge taut, ringing elastically under the TC rule at one instant) before same-instant
+# collisions were made perfectly inelastic.
+mkdir -p "$tmp/j"
+timeout 120 "$run" "$scenes/shake2d.ini" eps=0.96 gamma=15 estar=1.9 t_end=530 dt_checkpoint=0 \
+  dt_snapshot=0 profile_bins=0 profile_start=0 -o "$tmp/j/run.h5" 2>"$tmp/j/err"; rc=$?
+check "inelastic wet run through the former jam at t = 526 (exit $rc)" test "$rc" -eq 0
+check "rigid-cluster collisions were resolved" grep -qE 'rigid_collisions=[1-9]' "$tmp/j/err"
+check "ledger still closes" bash -c "grep -oE 'ledger_residual=[^ ]+' '$tmp/j/err' | \
+  awk -F= '{ n++; ok = (\$2 < 1e-9 && \$2 > -1e-9) } END { exit !(n == 1 && ok) }'"
+
 summary

@@ -97,6 +97,79 @@ static void tc_model(void)
   wg_ed_free(&s);
 }
 
+/* Three disks touching in a row, the outer two closing in: every collision after the first
+   happens at the same instant, so the TC model's elastic rule would not apply (RIGID_TIME):
+   they are perfectly inelastic and the row ends at rest as one body, after finitely many
+   collisions, with all its kinetic energy in the ledger. */
+static void rigid_row(void)
+{
+  const char *extra[] = {"eps=0.5", "tc=1", NULL};
+  wg_scene sc;
+  TH_CHECK(make_scene(&sc, extra) == 0, "TC scene accepted");
+  sc.n = 3;
+  double r[6] = {5, 10, 6, 10, 7, 10}, v[6] = {1, 0, 0, 0, -1, 0}, rad[3] = {0.5, 0.5, 0.5};
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc_state(&s, &sc, 3, r, v, rad, NULL, 0) == WG_OK, "state set up");
+  double e0 = kinetic(&s);
+  TH_CHECK(wg_ed_advance(&s, 1.0) == WG_OK, "the jammed row does not stall the run");
+  TH_CHECK(s.counts.collisions < 200, "finitely many collisions (%llu)", s.counts.collisions);
+  TH_CHECK(s.counts.rigid + 1 == s.counts.collisions, "all but the first are same-instant (%llu of %llu)",
+           s.counts.rigid, s.counts.collisions);
+  double rr[2], vv[2], vmax = 0;
+  for (long k = 0; k < 3; k++) {
+    wg_ed_position_of(&s, k, 1.0, rr, vv);
+    vmax = fmax(vmax, fabs(vv[0]));
+  }
+  TH_CLOSE("row at rest (momentum was zero)", vmax, 0.0, 0, 1e-9);
+  TH_CLOSE("kinetic energy all in the ledger", wg_ksum_value(&s.ledger.dissipated_coll), e0, 1e-12, 0);
+  wg_ed_free(&s);
+}
+
+/* A bonded pair at gap s_crit spinning with a purely tangential relative velocity: the hard
+   edge alone would need infinitely many reflections (Zeno).  The first reflection grazes and
+   leaves at GRAZING_ANGLE = 0.05: u_n = 0.05 |u| inward, |u| and the momentum unchanged, the
+   angular momentum mu L |u| reduced by sqrt(1 - 0.05^2); after that the relative position
+   runs along chords of angle 2 * 0.05, one reflection each. */
+static void grazing_bridge(void)
+{
+  const char *extra[] = {"s_crit=0.1", "e_cb=0.5", NULL};
+  wg_scene sc;
+  TH_CHECK(make_scene(&sc, extra) == 0, "wet elastic scene accepted");
+  const double L = 1.1, u = 0.3, theta = 0.05;
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc_empty(&s, &sc, 2) == WG_OK, "empty state allocated");
+  double r[2][2] = {{10, 10}, {10 + L, 10}}, v[2][2] = {{0, -0.5 * u}, {0, 0.5 * u}};
+  for (int i = 0; i < 2; i++) {
+    for (int k = 0; k < 2; k++) {
+      s.p[i].r[k] = r[i][k];
+      s.p[i].v[k] = v[i][k];
+    }
+    s.p[i].radius = 0.5;
+    s.nbond[i] = 1;
+    s.bond[(size_t)i * s.bond_cap] = 1 - i;
+  }
+  TH_CHECK(wg_ed_start(&s, 0) == WG_OK, "bonded pair at the edge set up");
+  double t_end = 20;
+  TH_CHECK(wg_ed_advance(&s, t_end) == WG_OK, "the spinning pair does not stall the run");
+  double ra[2], va[2], rb[2], vb[2];
+  wg_ed_position_of(&s, 0, t_end, ra, va);
+  wg_ed_position_of(&s, 1, t_end, rb, vb);
+  double du[2] = {vb[0] - va[0], vb[1] - va[1]}, dr[2] = {rb[0] - ra[0], rb[1] - ra[1]};
+  TH_CHECK(s.counts.grazing == 1 && s.counts.ruptures == 0 && wg_ed_bond_total(&s) == 1,
+           "one grazing reflection, bridge intact (grazing %llu, ruptures %llu)", s.counts.grazing,
+           s.counts.ruptures);
+  TH_CLOSE("relative speed unchanged", hypot(du[0], du[1]), u, 1e-13, 0);
+  TH_CLOSE("momentum unchanged", va[1] + vb[1], 0.0, 0, 1e-15);
+  TH_CLOSE("angular momentum L |u| sqrt(1 - theta^2)", dr[0] * du[1] - dr[1] * du[0],
+           L * u * sqrt(1 - theta * theta), 1e-12, 0);
+  /* chord length 2 L sin(theta), travelled at speed u; the first starts at t = 0 */
+  double chords = t_end * u / (2 * L * sin(theta));
+  TH_CHECK(fabs((double)s.counts.reflections - ceil(chords)) <= 1,
+           "one reflection per chord: %llu reflections, %.2f chords", s.counts.reflections, chords);
+  TH_CHECK(s.counts.collisions == 0, "the pair never comes back to contact (%llu)", s.counts.collisions);
+  wg_ed_free(&s);
+}
+
 static void periodic_image(void)
 {
   wg_scene sc;
@@ -194,6 +267,8 @@ int main(void)
   head_on_elastic();
   restitution_unequal_masses();
   tc_model();
+  rigid_row();
+  grazing_bridge();
   periodic_image();
   capture_and_rupture();
   ball_on_shaken_floor();
