@@ -3,9 +3,11 @@
    prints key, value, error rows (errors from the covariance matrix scaled by the reduced
    chi^2, i.e. from the scatter of the data).
      critical:  y = a (xc - x)^beta  for x < xc   (order parameter near a transition, Fig. 3.31)
-     line:      y = a + b x                       (transition energies against E_cb, Fig. 3.5) */
+     line:      y = a + b x                       (transition energies against E_cb, Fig. 3.5)
+     prop:      y = b x                           (the same through the origin: gsl_fit_mul) */
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_fit.h>
 #include <gsl/gsl_multifit_nlinear.h>
 #include <math.h>
 #include <stdio.h>
@@ -136,12 +138,14 @@ static int read_table(const char *path, const char *xname, const char *yname, do
 static void usage(FILE *out)
 {
   fprintf(out,
-          "Usage: wetgran-fit --model critical|line --x COL --y COL [--xmin X] [--xmax X]\n"
+          "Usage: wetgran-fit --model critical|line|prop --x COL --y COL [--xmin X] [--xmax X]\n"
           "                   [--prefix P] [--guess a,xc,beta] TABLE|-\n"
           "Least-squares fit (GSL trust-region Levenberg-Marquardt) of column y against x:\n"
           "  critical  y = a (xc - x)^beta for x < xc, 0 beyond (Fig. 3.31)\n"
           "  line      y = a + b x (Fig. 3.5)\n"
-          "Prints 'key value error' rows: P_a, P_xc, P_beta (or P_a, P_b), P_n (points) and\n"
+          "  prop      y = b x, a line through the origin (Fig. 3.5: E* as a slope)\n"
+          "Prints 'key value error' rows: P_a, P_xc, P_beta (or P_a, P_b; or P_b), P_n\n"
+          "(points) and\n"
           "P_chi2_dof; errors are the covariance errors scaled by sqrt(chi^2/dof).\n");
 }
 
@@ -169,12 +173,26 @@ int main(int argc, char **argv)
     } else path = o;
   }
   int critical = model && !strcmp(model, "critical"), linear = model && !strcmp(model, "line");
-  if ((!critical && !linear) || !xname || !yname || !path) {
+  int prop = model && !strcmp(model, "prop");
+  if ((!critical && !linear && !prop) || !xname || !yname || !path) {
     usage(stderr);
     return 2;
   }
   data d;
   if (read_table(path, xname, yname, xmin, xmax, &d)) return 1;
+  if (prop) { /* linear least squares: the slope's variance from the scatter about the fit */
+    if (d.n < 2) {
+      fprintf(stderr, "wetgran-fit: %s: %zu usable points, need at least 2\n", path, d.n);
+      return 1;
+    }
+    double b, cov, sumsq;
+    gsl_fit_mul(d.x, 1, d.y, 1, d.n, &b, &cov, &sumsq);
+    printf("key\tvalue\terror\n%s_b\t%.6g\t%.3g\n", prefix, b, sqrt(cov));
+    printf("%s_n\t%zu\tnan\n%s_chi2_dof\t%.4g\tnan\n", prefix, d.n, prefix, sumsq / (double)(d.n - 1));
+    free(d.x);
+    free(d.y);
+    return 0;
+  }
   size_t p = critical ? 3 : 2;
   if (d.n <= p) {
     fprintf(stderr, "wetgran-fit: %s: %zu usable points, need more than %zu\n", path, d.n, p);

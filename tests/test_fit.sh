@@ -27,4 +27,9 @@ check "missing column: non-zero exit naming it" bash -c "[ $rc -ne 0 ] && grep -
 printf 'x\ty\n1\t2\n2\tabc\n' > "$tmp/bad.tsv"
 "$fit" --model line --x x --y y "$tmp/bad.tsv" > /dev/null 2> "$tmp/err"; rc=$?
 check "non-number: non-zero exit naming file and line 3" bash -c "[ $rc -ne 0 ] && grep -q 'bad.tsv:3' '$tmp/err'"
+awk 'BEGIN { srand(5); print "ecb\tekin"; for (i = 1; i <= 6; i++) print i "\t" 1.52 * i * (1 + 0.03 * (rand() - 0.5)) }' > "$tmp/prop.tsv"
+"$fit" --model prop --x ecb --y ekin --prefix p "$tmp/prop.tsv" > "$tmp/p.out"
+read -r v e < <(get p_b "$tmp/p.out")
+check "slope through the origin 1.52 recovered: $v +- $e" within "$v" "$e" 1.52
+check "the slope's error shrinks with the scatter (< 0.02)" awk -v e="$e" 'BEGIN { exit !(e > 0 && e < 0.02) }'
 summary
