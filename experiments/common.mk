@@ -14,7 +14,8 @@ SHELL := /bin/bash
 CONF := $(PROFILE).conf
 conf = $(shell grep -v '^\s*\#' $(CONF) | grep -E '^\s*$(1)\s*=' | sed 's/^[^=]*=\s*//')
 
-# runs of a sweep are independent: use the machine's cores unless told otherwise
-ifeq ($(filter -j%,$(MAKEFLAGS)),)
+# runs of a sweep are independent: use the machine's cores unless told otherwise (a make
+# started by another one, e.g. for borrowed runs, shares its parent's job slots)
+ifeq ($(filter -j%,$(MAKEFLAGS) $(shell printenv MAKEFLAGS)),)
 MAKEFLAGS += -j$(shell nproc)
 endif
