@@ -19,3 +19,19 @@ conf = $(shell grep -v '^\s*\#' $(CONF) | grep -E '^\s*$(1)\s*=' | sed 's/^[^=]*
 ifeq ($(filter -j%,$(MAKEFLAGS) $(shell printenv MAKEFLAGS)),)
 MAKEFLAGS += -j$(shell nproc)
 endif
+
+# The figure id is the folder's name; every experiment makes figures/<id>.png and .pdf.
+ID := $(notdir $(CURDIR))
+FIGURE := $(FIGDIR)/$(ID).png
+
+all: $(FIGURE)
+	@echo "$(ID) ($(PROFILE)): results in $(CURDIR)/$(OUT)/results.tsv, figure in $(FIGURE) and .pdf"
+
+# $(call gnuplot,SCRIPT,VARIABLES): draw the figure as png and pdf, each renamed when complete
+gnuplot = gnuplot -e "$(2); png='$(FIGURE).tmp.png'; pdf='$(FIGDIR)/$(ID).pdf.tmp'" $(1) && \
+  mv $(FIGDIR)/$(ID).pdf.tmp $(FIGDIR)/$(ID).pdf && mv $(FIGURE).tmp.png $(FIGURE)
+
+$(OUT) $(OUT)/runs $(FIGDIR):
+	mkdir -p $@
+
+.PHONY: all

@@ -1,5 +1,5 @@
 # A phase diagram in the (E*, Gamma) plane (thesis Ch. 3), shared by the figures that differ
-# only in parameters.  The including Makefile sets ID (the figure id) and includes
+# only in parameters.  The including Makefile includes
 # ../common.mk first; its <profile>.conf gives estars, gammas and run (scene overrides: the
 # physics of the figure and the run lengths).  Each grid point is one run, a make target, so
 # `make -j` runs them in parallel and an interrupted sweep resumes.  The phase of each comes
@@ -13,9 +13,6 @@ estar_of = $(word 2,$(subst _E, ,$(1)))
 SCRIT := $(call conf,s_crit)
 ECB := $(call conf,e_cb)
 
-all: $(FIGDIR)/$(ID).png
-	@echo "$(ID) ($(PROFILE)): results in $(CURDIR)/$(OUT)/results.tsv, figure in $(FIGDIR)/$(ID).png and .pdf"
-
 $(OUT)/runs/G%.h5: $(SCENE) $(CONF) $(BIN)/wetgran-run | $(OUT)/runs
 	$(BIN)/wetgran-run $(SCENE) $(call conf,run) gamma=$(call gamma_of,$*) estar=$(call estar_of,$*) -q -o $@
 
@@ -28,11 +25,6 @@ $(OUT)/boundary.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
 $(OUT)/results.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
 	$(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical f:fgc $< > $@.tmp && mv $@.tmp $@
 
-$(FIGDIR)/$(ID).png: $(OUT)/results.tsv $(OUT)/boundary.tsv ../phase_diagram.gp | $(FIGDIR)
-	gnuplot -e "op='$(OUT)/orderparam.tsv'; bd='$(OUT)/boundary.tsv'; res='$(OUT)/results.tsv'; scrit=$(SCRIT); ecb=$(ECB); png='$@.tmp.png'; pdf='$(FIGDIR)/$(ID).pdf.tmp'" ../phase_diagram.gp
-	mv $(FIGDIR)/$(ID).pdf.tmp $(FIGDIR)/$(ID).pdf && mv $@.tmp.png $@
+$(FIGURE): $(OUT)/results.tsv $(OUT)/boundary.tsv ../phase_diagram.gp | $(FIGDIR)
+	$(call gnuplot,../phase_diagram.gp,op='$(OUT)/orderparam.tsv'; bd='$(OUT)/boundary.tsv'; res='$(OUT)/results.tsv'; scrit=$(SCRIT); ecb=$(ECB))
 
-$(OUT)/runs $(FIGDIR):
-	mkdir -p $@
-
-.PHONY: all
