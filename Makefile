@@ -46,7 +46,13 @@ all: tools
 deps:
 	@./scripts/install-deps.sh
 
-tools: $(TOOLS)
+tools: $(TOOLS) $(BIN)/wetgran-run.engine
+
+# A fingerprint of the simulator's sources: experiments rerun their runs when the physics code
+# changes, not when the binary is merely relinked (a new commit changes the version string).
+$(BIN)/wetgran-run.engine: $(wildcard sim/*.c sim/*.h) $(BIN)/wetgran-run
+	@cat $(sort $(wildcard sim/*.c sim/*.h)) | sha256sum | cmp -s - $@ || \
+	  cat $(sort $(wildcard sim/*.c sim/*.h)) | sha256sum > $@
 
 $(BUILD)/sim/%.o: sim/%.c $(wildcard sim/*.h) | $(BUILD)/sim
 	$(CC) $(ALL_CFLAGS) -c $< -o $@

@@ -54,8 +54,9 @@ static void usage(FILE *out)
     "a row <dir>_<A>_<B> (e.g. vertical_f_fgc) whose value is the mean coordinate of\n"
     "the midpoints between A and B (either order of the pair), averaged in the\n"
     "triangulation coordinate and mapped back (geometric mean on a log axis), error the\n"
-    "standard error of that mean (on a log axis: value * ln(10) * standard error of the\n"
-    "mean of log10), and a row <dir>_<A>_<B>_n with the number of midpoints.  With fewer\n"
+    "standard error of that mean combined with the grid's resolution (the mean half-extent\n"
+    "of the edges along that axis over sqrt 3; on a log axis all in log10, times value *\n"
+    "ln(10)), and a row <dir>_<A>_<B>_n with the number of midpoints.  With fewer\n"
     "than 2 midpoints the error is nan (with none, the value too) and a warning is\n"
     "printed on stderr.\n"
     "\n"
@@ -381,6 +382,7 @@ static int triangulate(double *u, size_t n, edge_t **edges, size_t *nedges, char
 typedef struct {
   const char *a, *b; /* a < b */
   double tx, ty;     /* midpoint in triangulation coordinates (log10 on log axes) */
+  double hx, hy;     /* half the edge's extent along each axis, same coordinates */
   double x, y;       /* mapped back */
 } mid_t;
 
@@ -430,13 +432,17 @@ static void print_fit(const fit_t *f, const mid_t *mids, size_t nm, const points
       sum += f->vertical ? mids[k].tx : mids[k].ty;
       n++;
     }
-  double mean = n ? sum / (double)n : NAN, ss = 0;
+  double mean = n ? sum / (double)n : NAN, ss = 0, half = 0;
   for (size_t k = 0; k < nm; k++)
     if (!strcmp(mids[k].a, a) && !strcmp(mids[k].b, b)) {
       double d = (f->vertical ? mids[k].tx : mids[k].ty) - mean;
       ss += d * d;
+      half += f->vertical ? mids[k].hx : mids[k].hy;
     }
-  double se = n >= 2 ? sqrt(ss / (double)(n - 1) / (double)n) : NAN;
+  /* the scatter of the midpoints, and the grid's resolution: each crossing lies anywhere on
+     its edge (uniform: half-extent / sqrt 3), the same grid for all, so not reduced by n */
+  double resolution = n ? half / (double)n / sqrt(3.0) : NAN;
+  double se = n >= 2 ? sqrt(ss / (double)(n - 1) / (double)n + resolution * resolution) : NAN;
   double value = logaxis ? pow(10, mean) : mean;
   double err = logaxis ? value * log(10.0) * se : se;
   const char *dir = f->vertical ? "vertical" : "horizontal";
@@ -616,7 +622,8 @@ int main(int argc, char **argv)
     int c = strcmp(p->label, q->label);
     if (!c) continue;
     mid_t m = {.a = c < 0 ? p->label : q->label, .b = c < 0 ? q->label : p->label,
-               .tx = 0.5 * (p->tx + q->tx), .ty = 0.5 * (p->ty + q->ty)};
+               .tx = 0.5 * (p->tx + q->tx), .ty = 0.5 * (p->ty + q->ty),
+               .hx = 0.5 * fabs(p->tx - q->tx), .hy = 0.5 * fabs(p->ty - q->ty)};
     m.x = o.logx ? pow(10, m.tx) : m.tx;
     m.y = o.logy ? pow(10, m.ty) : m.ty;
     mids[nm++] = m;

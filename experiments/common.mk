@@ -3,6 +3,8 @@
 PROFILE ?= quick
 TOP := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
 BIN := $(TOP)/bin
+# runs depend on the simulator's source fingerprint (see the top Makefile), not its binary
+ENGINE := $(BIN)/wetgran-run.engine
 OUT := out/$(PROFILE)
 FIGDIR := $(TOP)/figures
 SCENES := $(TOP)/sim/scenes

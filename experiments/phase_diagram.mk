@@ -13,7 +13,7 @@ estar_of = $(word 2,$(subst _E, ,$(1)))
 SCRIT := $(call conf,s_crit)
 ECB := $(call conf,e_cb)
 
-$(OUT)/runs/G%.h5: $(SCENE) $(CONF) $(BIN)/wetgran-run | $(OUT)/runs
+$(OUT)/runs/G%.h5: $(SCENE) $(CONF) $(ENGINE) | $(OUT)/runs
 	$(BIN)/wetgran-run $(SCENE) $(call conf,run) gamma=$(call gamma_of,$*) estar=$(call estar_of,$*) -q -o $@
 
 $(OUT)/orderparam.tsv: $(POINTS) $(BIN)/wetgran-orderparam

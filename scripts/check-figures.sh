@@ -1,13 +1,16 @@
 #!/bin/bash
 # Compares every experiments/<id>/out/<profile>/results.tsv with data/reference/<id>.tsv:
 # |value - reference| must lie within the profile's tolerance.  Names figure, key, value and
-# band on failure; exits non-zero if any key fails or a results file is missing.
+# band on failure; exits non-zero if any key fails or a results file is missing.  A tolerance
+# written "xfail:BAND" marks a known discrepancy of that profile (documented in the reference
+# file and the README): it is checked against BAND and reported as XFAIL, or XPASS if it meets
+# it after all, and does not fail the run.
 # Usage: scripts/check-figures.sh [quick|full]
 set -u
 profile=${1:-quick}
 top=$(cd "$(dirname "$0")/.." && pwd)
 col=3; [ "$profile" = full ] && col=4
-status=0 checked=0 passed=0 failed=0
+status=0 checked=0 passed=0 failed=0 xfail=0
 for ref in "$top"/data/reference/*.tsv; do
   id=$(basename "$ref" .tsv)
   res="$top/experiments/$id/out/$profile/results.tsv"
@@ -22,13 +25,18 @@ for ref in "$top"/data/reference/*.tsv; do
     if [ -z "$got" ]; then
       echo "FAIL  $id: key $key missing from $res"; status=1; failed=$((failed + 1)); continue
     fi
+    known=0
+    case "$tol" in xfail:*) known=1; tol=${tol#xfail:};; esac
     if awk -v g="$got" -v v="$value" -v t="$tol" 'BEGIN { d = g - v; if (d < 0) d = -d; exit !(g == g + 0 && d <= t) }'; then
-      echo "ok    $id: $key = $got within $value +- $tol ($profile)"; passed=$((passed + 1))
+      if [ $known -eq 1 ]; then echo "XPASS $id: $key = $got within $value +- $tol ($profile; a known discrepancy met after all)"; xfail=$((xfail + 1))
+      else echo "ok    $id: $key = $got within $value +- $tol ($profile)"; passed=$((passed + 1)); fi
+    elif [ $known -eq 1 ]; then
+      echo "XFAIL $id: $key = $got outside $value +- $tol ($profile; known discrepancy, see data/reference/$id.tsv)"; xfail=$((xfail + 1))
     else
       echo "FAIL  $id: $key = $got outside $value +- $tol ($profile)"; status=1; failed=$((failed + 1))
     fi
   done < "$ref"
 done
-echo "check-figures ($profile): $checked keys checked"
+echo "check-figures ($profile): $checked keys checked, $xfail known discrepancies (XFAIL/XPASS)"
 echo "$passed passed, $failed failed"
 exit $status

@@ -110,9 +110,15 @@ read -r gm gerr am aerr < <(awk -F'\t' 'NR > 1 { n++; l = log($1) / log(10); s +
   END { m = s / n; se = sqrt((ss - n * m * m) / (n - 1) / n); v = exp(m * log(10))
         a = t / n; ae = sqrt((tt - n * a * a) / (n - 1) / n); printf "%.12g %.12g %.12g %.12g\n", v, v * log(10) * se, a, ae }' "$tmp/jit.out")
 check "jittered: vertical value is the geometric mean of the midpoints' x ($gm)" near "$v" "$gm" 1e-8
-check "jittered: vertical error is value*ln(10)*stderr of log10 x ($gerr vs $e)" near "$e" "$gerr" 1e-8
-check "jittered: horizontal value and error are the plain mean and stderr of y ($am +- $aerr)" \
-  bash -c "near '$(value horizontal_f_fgc "$tmp/jit.fit")' '$am' 1e-7 && near '$(error horizontal_f_fgc "$tmp/jit.fit")' '$aerr' 1e-7"
+# the error adds the grid's resolution to the scatter: sqrt(err^2 - stderr^2) lies between 0
+# and the half-extent of a long edge over sqrt 3 (an edge of the jittered grid spans at most
+# about 3.2 spacings: x spacing 2/14 decade, in log10 times value ln 10; y spacing 1)
+res_between() { awk -v e="$1" -v s="$2" -v hi="$3" 'BEGIN { r = e * e - s * s; exit !(r > 0 && sqrt(r) <= hi) }'; }
+export -f res_between
+check "jittered: vertical error = stderr of log10 x (times value ln 10) plus resolution ($gerr < $e)" \
+  res_between "$e" "$gerr" "$(awk -v v="$v" 'BEGIN { print v * log(10) * 1.6 * 2 / 14 / sqrt(3) }')"
+check "jittered: horizontal value is the plain mean of y ($am), its error stderr plus resolution" \
+  bash -c "near '$(value horizontal_f_fgc "$tmp/jit.fit")' '$am' 1e-7 && res_between '$(error horizontal_f_fgc "$tmp/jit.fit")' '$aerr' $(awk 'BEGIN { print 1.6 / sqrt(3) }')"
 check "jittered: the error is a real number, not nan" awk -v e="$e" 'BEGIN { exit !(e > 0 && e < 0.2) }'
 # points in general position have one Delaunay triangulation: the order of the rows is irrelevant
 awk 'BEGIN { srand(7) } NR == 1 { print; next } { printf "%.17f\t%s\n", rand(), $0 }' "$tmp/jit.tsv" \
