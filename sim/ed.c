@@ -23,13 +23,13 @@ enum { BOND_CAP_2D = 8, BOND_CAP_3D = 16 };
 /* Normal speeds below this at a closed contact are rest: after a perfectly inelastic
    collision the remaining u_n is round-off, which must not trigger another collision. */
 #define REST_SPEED 1e-10 /* [sqrt(g d)] */
-/* A bonded pair that reaches gap s_crit with a normal speed below this fraction of its
+/* A bonded pair that reaches gap s_crit with a normal speed below grazing_angle (a scene
+   key, default 0.05 rad: about pi / angle reflections per revolution) times its
    relative speed grazes the edge: a rotating taut bridge would bounce ever more often
    (a particle sliding along the inside of a circle), so it leaves at this angle, the
    normal speed taken from the tangential motion (energy and momentum are kept).  A rigid
    cluster spinning on a taut bridge so sheds its spin within ~1/angle^2 reflections; the
    normal energy handed over can rupture a bridge only if 1/2 mu u^2 > E_cb / angle^2. */
-#define GRAZING_ANGLE 0.05 /* [rad]: about pi / GRAZING_ANGLE reflections per revolution */
 /* Without the TC model, the time scale of wall_min_speed [sqrt(d/g)]. */
 #define WALL_MIN_TIME 1e-12
 
@@ -407,7 +407,7 @@ static int collide(wg_ed *s, long i, long j)
 
 /* A bonded pair separating through gap s_crit (thin-thread model): the bridge ruptures if
    the normal kinetic energy exceeds E_cb, taking exactly E_cb; otherwise the pair is
-   reflected back into the well without loss (at no less than GRAZING_ANGLE). */
+   reflected back into the well without loss (at no less than grazing_angle). */
 static void bridge_edge(wg_ed *s, long i, long j)
 {
   double n[3], dist;
@@ -425,7 +425,7 @@ static void bridge_edge(wg_ed *s, long i, long j)
   s->counts.reflections++;
   double dr[3], du[3] = {0, 0, 0};
   pair_state(s, i, j, dr, du);
-  double u2 = dot(du, du, s->dim), u_min = GRAZING_ANGLE * sqrt(u2);
+  double u2 = dot(du, du, s->dim), u_min = s->grazing_angle * sqrt(u2);
   if (un >= u_min * (1 - 1e-9)) { /* (a pair that grazed before comes back at u_min) */
     normal_kick(s, i, j, n, -2 * un);
     return;
@@ -706,6 +706,7 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
   s->eps = sc->eps;
   s->eps_wall = sc->eps_wall;
   s->tc = sc->tc;
+  s->grazing_angle = sc->grazing_angle;
   s->wet = sc->s_crit > 0 && sc->e_cb > 0;
   s->s_crit = s->wet ? sc->s_crit : 0;
   s->e_cb = s->wet ? sc->e_cb : 0;

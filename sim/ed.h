@@ -61,7 +61,7 @@ typedef struct wg_ed {
   double s_crit, e_cb;
   int bond_cap;                /* bonds per particle */
   int inelastic;               /* eps < 1 or eps_wall < 1: TC bookkeeping */
-  double eps, eps_wall, tc;
+  double eps, eps_wall, tc, grazing_angle;
   double wall_min_speed;       /* least speed of a particle leaving a wall (see wall_collide) */
 
   /* Particles are stored in slots, renumbered in cell order at every synchronisation so that

@@ -61,7 +61,7 @@ typedef struct {
 
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
-  K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GAMMA, K_ESTAR,
+  K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT, NKEYS
 };
@@ -124,6 +124,9 @@ static const key_desc keys[NKEYS] = {
                   "1", "coefficient of restitution at the walls", NULL, 0, 0},
   [K_TC] = {"tc", T_DOUBLE, OFF(tc), 0, INF, MAX_EXCL, DEF_VALUE, 1e-5, NULL, "sqrt(d/g)",
             "TC model: a collision within tc of the previous one is elastic", NULL, 0, 0},
+  [K_GRAZING] = {"grazing_angle", T_DOUBLE, OFF(grazing_angle), 0, 1, MAX_EXCL, DEF_VALUE, 0.05,
+                 NULL, "rad", "a bonded pair reaching gap s_crit at a smaller angle leaves at "
+                 "this one (a spinning taut bridge would bounce endlessly)", NULL, 0, 0},
   [K_GAMMA] = {"gamma", T_DOUBLE, OFF(gamma), 0, INF, MIN_EXCL | MAX_EXCL, DEF_COND, 0,
                "required (shaker)", "1", "reduced acceleration Gamma = A w^2 / g (Eq. 2.19)",
                NULL, 0, 0},

@@ -277,8 +277,8 @@ static void test_visit_and_help(void)
   int rc = load_variant(&sc, NULL, 0);
 
   rc = rc ? rc : wg_scene_visit(&sc, record, &log);
-  TH_CHECK(rc == WG_OK && log.count == 31 + 3 && strcmp(log.last, "t_driv") == 0,
-           "visit: 31 keys then 3 derived entries (count %d, last %s)", log.count, log.last);
+  TH_CHECK(rc == WG_OK && log.count == 32 + 3 && strcmp(log.last, "t_driv") == 0,
+           "visit: 32 keys then 3 derived entries (count %d, last %s)", log.count, log.last);
   TH_CHECK(strcmp(log.gamma, "15") == 0 && strcmp(log.container, "shaker") == 0,
            "visit values: gamma '%s', container '%s'", log.gamma, log.container);
   rc = wg_scene_visit(&sc, find_amplitude, &amp);

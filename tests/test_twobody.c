@@ -127,15 +127,15 @@ static void rigid_row(void)
 
 /* A bonded pair at gap s_crit spinning with a purely tangential relative velocity: the hard
    edge alone would need infinitely many reflections (Zeno).  The first reflection grazes and
-   leaves at GRAZING_ANGLE = 0.05: u_n = 0.05 |u| inward, |u| and the momentum unchanged, the
+   leaves at grazing_angle = 0.05 (default): u_n = 0.05 |u| inward, |u| and the momentum unchanged, the
    angular momentum mu L |u| reduced by sqrt(1 - 0.05^2); after that the relative position
    runs along chords of angle 2 * 0.05, one reflection each. */
-static void grazing_bridge(void)
+static void grazing_bridge(const char *angle_key, double theta)
 {
-  const char *extra[] = {"s_crit=0.1", "e_cb=0.5", NULL};
+  const char *extra[] = {"s_crit=0.1", "e_cb=0.5", angle_key, NULL};
   wg_scene sc;
-  TH_CHECK(make_scene(&sc, extra) == 0, "wet elastic scene accepted");
-  const double L = 1.1, u = 0.3, theta = 0.05;
+  TH_CHECK(make_scene(&sc, extra) == 0, "wet elastic scene accepted (%s)", angle_key ? angle_key : "default angle");
+  const double L = 1.1, u = 0.3;
   wg_ed s;
   TH_CHECK(wg_ed_alloc_empty(&s, &sc, 2) == WG_OK, "empty state allocated");
   double r[2][2] = {{10, 10}, {10 + L, 10}}, v[2][2] = {{0, -0.5 * u}, {0, 0.5 * u}};
@@ -268,7 +268,8 @@ int main(void)
   restitution_unequal_masses();
   tc_model();
   rigid_row();
-  grazing_bridge();
+  grazing_bridge(NULL, 0.05);
+  grazing_bridge("grazing_angle=0.1", 0.1);
   periodic_image();
   capture_and_rupture();
   ball_on_shaken_floor();
