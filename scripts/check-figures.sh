@@ -8,7 +8,7 @@
 # Usage: scripts/check-figures.sh [quick|full]
 set -u
 profile=${1:-quick}
-top=$(cd "$(dirname "$0")/.." && pwd)
+top=${WG_TOP:-$(cd "$(dirname "$0")/.." && pwd)}  # WG_TOP: another tree (tests)
 col=3; [ "$profile" = full ] && col=4
 status=0 checked=0 passed=0 failed=0 xfail=0
 for ref in "$top"/data/reference/*.tsv; do
