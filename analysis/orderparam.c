@@ -260,14 +260,16 @@ static double mean_of(const double *x, size_t n)
    3. t_sf: Otsu's cut within the colder class, kept only if its two sub-classes differ by
       more than SOLID_DECADES in mean log T (a solid is far colder than a fluid); otherwise
       the sweep holds no solid and the default stays.
-   Each step reports the classes it found on stderr, so the choice can be checked. */
+   Each step reports the classes it found on stderr, so the choice can be checked.  A threshold
+   given on the command line (bit in 'given': 1 t_sf, 2 t_fg, 4 dn) is kept and used by the
+   later steps, e.g. a dry sweep whose homogeneous runs are all gas-like (--t-fg 0). */
 #define SOLID_DECADES 1.0
 #define MIN_RUNS_CONTRAST 4 /* fewer runs cannot show two classes of contrast */
-static void calibrate(const row *rows, size_t n, thresholds *th)
+enum { GIVEN_T_SF = 1, GIVEN_T_FG = 2, GIVEN_DN = 4 };
+static void calibrate(const row *rows, size_t n, thresholds *th, int given)
 {
   double *lt = malloc(sizeof *lt * n), *dn = malloc(sizeof *dn * n);
   size_t nt = 0, nd = 0;
-  *th = default_thresholds;
   if (!lt || !dn) {
     free(lt);
     free(dn);
@@ -277,7 +279,7 @@ static void calibrate(const row *rows, size_t n, thresholds *th)
     double c = rows[i].e_cb > 0 ? rows[i].dn_cb : rows[i].dn_area;
     if (isfinite(c)) dn[nd++] = c;
   }
-  if (nd >= MIN_RUNS_CONTRAST) {
+  if (nd >= MIN_RUNS_CONTRAST && !(given & GIVEN_DN)) {
     qsort(dn, nd, sizeof *dn, cmp_double);
     double c = otsu_two(dn, nd);
     if (isfinite(c)) th->dn = c;
@@ -288,7 +290,10 @@ static void calibrate(const row *rows, size_t n, thresholds *th)
   }
   qsort(lt, nt, sizeof *lt, cmp_double);
   double cut = nt >= 2 ? otsu_two(lt, nt) : NAN;
-  if (isfinite(cut)) {
+  if (isfinite(cut) && (given & GIVEN_T_FG)) {
+    fprintf(stderr, "calibrate: contrast cut dn = %.4g; t_fg = %.4g and t_sf = %.4g %s\n", th->dn,
+            th->t_fg, th->t_sf, (given & GIVEN_T_SF) ? "as given" : "(t_fg as given)");
+  } else if (isfinite(cut)) {
     th->t_fg = pow(10, cut);
     size_t k = 0;
     while (k < nt && lt[k] < cut) k++;
@@ -300,7 +305,7 @@ static void calibrate(const row *rows, size_t n, thresholds *th)
       size_t j = 0;
       while (j < k && lt[j] < sub) j++;
       double gap = mean_of(lt + j, k - j) - mean_of(lt, j);
-      if (gap > SOLID_DECADES) th->t_sf = pow(10, sub);
+      if (gap > SOLID_DECADES && !(given & GIVEN_T_SF)) th->t_sf = pow(10, sub);
       fprintf(stderr, "calibrate: colder class splits at %.4g into means %.3g decades apart: %s\n",
               pow(10, sub), gap, gap > SOLID_DECADES ? "solid and fluid" : "no solid in this sweep");
     }
@@ -434,7 +439,8 @@ static void usage(FILE *out)
           "                             log T_g over the homogeneous runs gives t_fg; a further\n"
           "                             cut of the colder class gives t_sf if its halves lie\n"
           "                             more than a decade apart.  The classes found go to\n"
-          "                             stderr, the thresholds to a '#' line before the table\n"
+          "                             stderr, the thresholds to a '#' line before the table;\n"
+          "                             thresholds also given as options are kept\n"
           "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
           "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
@@ -456,7 +462,7 @@ static int parse_double(const char *opt, const char *s, double *v)
 int main(int argc, char **argv)
 {
   thresholds th = default_thresholds;
-  int do_calibrate = 0, do_inflection = 0;
+  int do_calibrate = 0, do_inflection = 0, given = 0;
   const char *h5_out = NULL;
   const char **files = calloc((size_t)argc, sizeof *files);
   size_t nf = 0;
@@ -472,6 +478,7 @@ int main(int argc, char **argv)
     else if (!strcmp(o, "--h5") && a + 1 < argc) h5_out = argv[++a];
     else if ((!strcmp(o, "--t-sf") || !strcmp(o, "--t-fg") || !strcmp(o, "--dn")) && a + 1 < argc) {
       double *dst = !strcmp(o, "--t-sf") ? &th.t_sf : !strcmp(o, "--t-fg") ? &th.t_fg : &th.dn;
+      given |= !strcmp(o, "--t-sf") ? GIVEN_T_SF : !strcmp(o, "--t-fg") ? GIVEN_T_FG : GIVEN_DN;
       if (parse_double(o, argv[++a], dst) != WG_OK) {
         free(files);
         return 2;
@@ -497,7 +504,7 @@ int main(int argc, char **argv)
     st = inflection(rows, nf);
   } else if (st == WG_OK) {
     if (do_calibrate) {
-      calibrate(rows, nf, &th);
+      calibrate(rows, nf, &th, given);
       printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\n", nf, th.t_sf, th.t_fg, th.dn);
     }
     printf("file\tgamma\testar\testar_d\te_cb\teps\tt0\tt1\tstationary\tdrift\ttg\ttg_err\t"

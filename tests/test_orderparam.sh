@@ -34,6 +34,9 @@ check "settled runs are not flagged" bash -c "! grep -q 'not stationary' '$tmp/o
 tfg=$(awk -F"\t" "NR == 1 { print \$4 }" "$tmp/cal.tsv")
 check "--calibrate puts the fluid/gas cut between the two runs' temperatures ($tfg)" \
   awk -v c="$tfg" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
+"$bin/wetgran-orderparam" --calibrate --t-fg 1e6 "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/cal2.tsv" 2> /dev/null
+check "--calibrate keeps a threshold given on the command line (t_fg = 1e6: no gas)" \
+  bash -c "awk -F'\t' 'NR == 1 { exit !(\$4 == 1e+06) }' '$tmp/cal2.tsv' && [ \$(grep -c \"\tg\$\" '$tmp/cal2.tsv') -eq 0 ]"
 "$bin/wetgran-orderparam" --h5 "$tmp/op.h5" "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2>&1
 h5dump -d /orderparam/tg -y -o "$tmp/tg.txt" "$tmp/op.h5" > /dev/null 2>&1
 check "--h5 writes the same T_g/E_cb as the table" \
