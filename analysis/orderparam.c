@@ -262,10 +262,12 @@ static double mean_of(const double *x, size_t n)
       the sweep holds no solid and the default stays.
    Each step reports the classes it found on stderr, so the choice can be checked.  A threshold
    given on the command line (bit in 'given': 1 t_sf, 2 t_fg, 4 dn) is kept and used by the
-   later steps, e.g. a dry sweep whose homogeneous runs are all gas-like (--t-fg 0). */
+   later steps.  With LOG_CONTRAST the contrasts are cut on a log scale: a scan through a
+   coexistence band whose contrasts span decades (Fig. 3.17), where the linear cut would
+   follow the largest values only. */
 #define SOLID_DECADES 1.0
 #define MIN_RUNS_CONTRAST 4 /* fewer runs cannot show two classes of contrast */
-enum { GIVEN_T_SF = 1, GIVEN_T_FG = 2, GIVEN_DN = 4 };
+enum { GIVEN_T_SF = 1, GIVEN_T_FG = 2, GIVEN_DN = 4, LOG_CONTRAST = 8 };
 static void calibrate(const row *rows, size_t n, thresholds *th, int given)
 {
   double *lt = malloc(sizeof *lt * n), *dn = malloc(sizeof *dn * n);
@@ -277,12 +279,12 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
   }
   for (size_t i = 0; i < n; i++) {
     double c = rows[i].e_cb > 0 ? rows[i].dn_cb : rows[i].dn_area;
-    if (isfinite(c)) dn[nd++] = c;
+    if (isfinite(c) && (!(given & LOG_CONTRAST) || c > 0)) dn[nd++] = (given & LOG_CONTRAST) ? log10(c) : c;
   }
   if (nd >= MIN_RUNS_CONTRAST && !(given & GIVEN_DN)) {
     qsort(dn, nd, sizeof *dn, cmp_double);
     double c = otsu_two(dn, nd);
-    if (isfinite(c)) th->dn = c;
+    if (isfinite(c)) th->dn = (given & LOG_CONTRAST) ? pow(10, c) : c;
   }
   for (size_t i = 0; i < n; i++) {
     double c = rows[i].e_cb > 0 ? rows[i].dn_cb : rows[i].dn_area;
@@ -441,6 +443,8 @@ static void usage(FILE *out)
           "                             more than a decade apart.  The classes found go to\n"
           "                             stderr, the thresholds to a '#' line before the table;\n"
           "                             thresholds also given as options are kept\n"
+          "  --log-contrast             with --calibrate: Otsu's cut of log10 of the contrasts,\n"
+          "                             for a scan whose contrasts span decades\n"
           "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
           "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
@@ -474,6 +478,7 @@ int main(int argc, char **argv)
       return 0;
     }
     if (!strcmp(o, "--calibrate")) do_calibrate = 1;
+    else if (!strcmp(o, "--log-contrast")) given |= LOG_CONTRAST;
     else if (!strcmp(o, "--inflection")) do_inflection = 1;
     else if (!strcmp(o, "--h5") && a + 1 < argc) h5_out = argv[++a];
     else if ((!strcmp(o, "--t-sf") || !strcmp(o, "--t-fg") || !strcmp(o, "--dn")) && a + 1 < argc) {

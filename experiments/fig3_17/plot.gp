@@ -1,0 +1,24 @@
+# Fig. 3.17 look: the amplitude band of coexistence in the gas region against eps: runs
+# (white coexisting, orange homogeneous gas), the band's upper edge A_crit with its
+# resolution, the lower edge where the scan shows one, the fitted line, and the thesis's two
+# fits A/d = -3.61 (eps - 1) + 0.24 (black) and -1.72 (eps - 1) + 0.24 (red).
+color(l) = l eq "fgc" ? 0xffffff : l eq "g" ? 0xf0a030 : 0xff0000
+a = real(system(sprintf("awk '$1 == \"acrit_line_a\" { print $2 }' %s", res)))
+b = real(system(sprintf("awk '$1 == \"acrit_line_b\" { print $2 }' %s", res)))
+do for [k = 1:2] {
+  reset
+  if (k == 1) { set terminal pngcairo size 1000,750 font ",12"; set output png } \
+  else { set terminal pdfcairo size 10in,7.5in font ",12"; set output pdf }
+  set xrange [0.77:1.01]; set yrange [0:1.3]
+  set xlabel "{/Symbol e}"
+  set ylabel "A / d"
+  set key top right opaque box font ",10"
+  set title "coexistence band inside the gas region, {/Symbol G} = 15"
+  plot op using 6:18:(color(strcol(17))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
+       op using 6:18 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (white coexisting, orange gas)", \
+       tr using (strcol(2) eq "fgc_g" ? $1 : 1/0):3:4 every ::1 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb "blue" title "A_{crit}: upper edge of the band", \
+       lo using 1:2:3 with yerrorbars pt 6 ps 1.5 lw 2 lc rgb "blue" title "lower edge (where gas lies below the band)", \
+       a + b * (1 - x) title sprintf("fit: A_{crit}/d = %.2f + %.2f (1 - {/Symbol e})", a, b) with lines lw 2 dt 2 lc rgb "blue", \
+       0.24 - 3.61 * (x - 1) title "thesis: -3.61 ({/Symbol e} - 1) + 0.24" with lines lw 2 lc rgb "black", \
+       0.24 - 1.72 * (x - 1) title "thesis: -1.72 ({/Symbol e} - 1) + 0.24" with lines lw 2 lc rgb "red"
+}
