@@ -12,6 +12,7 @@ HDF5_CFLAGS := $(shell pkg-config --cflags hdf5-serial 2>/dev/null)
 HDF5_LIBS := $(shell pkg-config --libs hdf5-serial 2>/dev/null)
 GIT_VERSION := $(shell git describe --always --dirty 2>/dev/null || echo unknown)
 WARN := -Wall -Wextra
+NPROC := $(shell nproc 2>/dev/null || echo 2)
 # -ffp-contract=off: no FMA contraction, so results are bit-identical across builds
 BASE_CFLAGS := -std=c11 -D_GNU_SOURCE $(OPT) $(WARN) -ffp-contract=off
 
@@ -90,7 +91,7 @@ tests-build: $(TOOLS) $(TEST_BIN)
 
 # The test command of the README (and of .ci/run).
 test: deps
-	$(MAKE) tests-build
+	$(MAKE) -j$(NPROC) tests-build
 	./tests/run.sh $(BUILD)/tests $(BIN)
 
 bench: deps
@@ -100,11 +101,21 @@ bench: deps
 # Figures: make fig3_2 [PROFILE=quick|full]; each is experiments/<id>/.
 PROFILE ?= quick
 FIGURES := $(notdir $(wildcard experiments/fig*))
-.PHONY: $(FIGURES) figures check-figures
+.PHONY: $(FIGURES) figures check-figures $(addprefix figure-,$(FIGURES))
 $(FIGURES): deps
 	$(MAKE) tools
 	$(MAKE) -C experiments/$@ PROFILE=$(PROFILE)
-figures: $(FIGURES)
+
+# All figures share one pool of job slots (-j per core), so no core idles while one figure
+# finishes its last run; a figure that borrows another's runs (borrow = in its conf) waits
+# for that one, so no run is made twice at once.
+figures: deps
+	$(MAKE) -j$(NPROC) tools
+	$(MAKE) -j$(NPROC) $(addprefix figure-,$(FIGURES))
+$(addprefix figure-,$(FIGURES)): figure-%:
+	$(MAKE) -C experiments/$* PROFILE=$(PROFILE)
+borrowed = $(shell grep -E '^\s*borrow\s*=' experiments/$(1)/$(PROFILE).conf 2>/dev/null | sed 's/^[^=]*=//')
+$(foreach f,$(FIGURES),$(eval figure-$(f): $(addprefix figure-,$(call borrowed,$(f)))))
 
 # Compare every figure's results.tsv with data/reference/<id>.tsv (after make figures).
 check-figures:
