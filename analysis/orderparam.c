@@ -320,35 +320,40 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
    which log10 T_g rises most steeply against log10 E*; the error is half that segment.
    With inelastic collisions T_g has no jump between fluid and gas, and the thesis takes
    this point as the boundary (App. 3.A.1.2). */
-static int inflection(const row *rows, size_t n)
+/* The scan variable of --inflection: E* (Fig. 3.29) or Gamma (the s-f line of Fig. 3.11). */
+static double scan_x(const row *r, int along_gamma) { return along_gamma ? r->gamma : r->estar; }
+
+static int inflection(const row *rows, size_t n, int along_gamma)
 {
+  const char *name = along_gamma ? "gamma" : "estar";
   size_t *order = malloc(sizeof *order * n);
   if (!order) return WG_ENOMEM;
   size_t m = 0;
   for (size_t i = 0; i < n; i++)
-    if (rows[i].tg > 0 && rows[i].estar > 0) order[m++] = i;
-  for (size_t i = 1; i < m; i++) /* by E*, a few dozen runs */
-    for (size_t j = i; j > 0 && rows[order[j - 1]].estar > rows[order[j]].estar; j--) {
+    if (rows[i].tg > 0 && scan_x(&rows[i], along_gamma) > 0) order[m++] = i;
+  for (size_t i = 1; i < m; i++) /* by the scan variable, a few dozen runs */
+    for (size_t j = i; j > 0 && scan_x(&rows[order[j - 1]], along_gamma) > scan_x(&rows[order[j]], along_gamma); j--) {
       size_t t = order[j];
       order[j] = order[j - 1];
       order[j - 1] = t;
     }
   double best = -INFINITY, lo = NAN, hi = NAN;
   for (size_t k = 1; k < m; k++) {
-    const row *a = &rows[order[k - 1]], *b = &rows[order[k]];
-    if (b->estar == a->estar) continue;
-    double slope = (log10(b->tg) - log10(a->tg)) / (log10(b->estar) - log10(a->estar));
+    double xa = scan_x(&rows[order[k - 1]], along_gamma), xb = scan_x(&rows[order[k]], along_gamma);
+    if (xb == xa) continue;
+    double slope = (log10(rows[order[k]].tg) - log10(rows[order[k - 1]].tg)) / (log10(xb) - log10(xa));
     if (slope > best) {
       best = slope;
-      lo = a->estar;
-      hi = b->estar;
+      lo = xa;
+      hi = xb;
     }
   }
   free(order);
-  if (!isfinite(lo)) return wg_error(WG_EINVAL, "wetgran-orderparam", "--inflection needs runs at two E* at least");
+  if (!isfinite(lo))
+    return wg_error(WG_EINVAL, "wetgran-orderparam", "--inflection needs runs at two values of %s at least", name);
   double mid = sqrt(lo * hi);
   printf("key\tvalue\terror\n");
-  printf("inflection_estar\t%.6g\t%.3g\n", mid, 0.5 * (hi - lo));
+  printf("inflection_%s\t%.6g\t%.3g\n", name, mid, 0.5 * (hi - lo));
   printf("inflection_slope\t%.4g\tnan\n", best);
   return WG_OK;
 }
@@ -449,7 +454,9 @@ static void usage(FILE *out)
           "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
           "                             steeply along the runs given (a scan in E*), as\n"
-          "                             key/value/error rows (inelastic f-g boundary, Fig. 3.29)\n",
+          "                             key/value/error rows (inelastic f-g boundary, Fig. 3.29)\n"
+          "  --along estar|gamma        the scan variable of --inflection (default estar; gamma:\n"
+          "                             the s-f line of Fig. 3.11, a scan in Gamma at fixed E*)\n",
           DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
           default_thresholds.t_fg, default_thresholds.dn);
 }
@@ -466,7 +473,7 @@ static int parse_double(const char *opt, const char *s, double *v)
 int main(int argc, char **argv)
 {
   thresholds th = default_thresholds;
-  int do_calibrate = 0, do_inflection = 0, given = 0;
+  int do_calibrate = 0, do_inflection = 0, given = 0, along_gamma = 0;
   const char *h5_out = NULL;
   const char **files = calloc((size_t)argc, sizeof *files);
   size_t nf = 0;
@@ -480,6 +487,15 @@ int main(int argc, char **argv)
     if (!strcmp(o, "--calibrate")) do_calibrate = 1;
     else if (!strcmp(o, "--log-contrast")) given |= LOG_CONTRAST;
     else if (!strcmp(o, "--inflection")) do_inflection = 1;
+    else if (!strcmp(o, "--along") && a + 1 < argc) {
+      const char *v = argv[++a];
+      if (strcmp(v, "estar") && strcmp(v, "gamma")) {
+        fprintf(stderr, "wetgran-orderparam: --along: '%s' is not estar or gamma\n", v);
+        free(files);
+        return 2;
+      }
+      along_gamma = !strcmp(v, "gamma");
+    }
     else if (!strcmp(o, "--h5") && a + 1 < argc) h5_out = argv[++a];
     else if ((!strcmp(o, "--t-sf") || !strcmp(o, "--t-fg") || !strcmp(o, "--dn")) && a + 1 < argc) {
       double *dst = !strcmp(o, "--t-sf") ? &th.t_sf : !strcmp(o, "--t-fg") ? &th.t_fg : &th.dn;
@@ -506,7 +522,7 @@ int main(int argc, char **argv)
   int st = WG_OK;
   for (size_t i = 0; i < nf && st == WG_OK; i++) st = measure(files[i], &rows[i]);
   if (st == WG_OK && do_inflection) {
-    st = inflection(rows, nf);
+    st = inflection(rows, nf, along_gamma);
   } else if (st == WG_OK) {
     if (do_calibrate) {
       calibrate(rows, nf, &th, given);

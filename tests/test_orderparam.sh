@@ -44,6 +44,12 @@ check "--h5 writes the same T_g/E_cb as the table" \
 "$bin/wetgran-orderparam" --inflection "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/inf.tsv"
 check "--inflection of a two-run scan: the geometric middle sqrt(0.5 * 2.5) +- 1" \
   awk -F'\t' '$1 == "inflection_estar" { d = $2 - sqrt(1.25); ok = (d < 1e-4 && d > -1e-4 && $3 == 1) } END { exit !ok }' "$tmp/inf.tsv"
+"$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=0.5 gamma=30 -q -o "$tmp/cold30.h5" 2>/dev/null
+"$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold30.h5" "$tmp/cold.h5" > "$tmp/infg.tsv"
+check "--inflection --along gamma of a two-run scan in Gamma: sqrt(15 * 30) +- 7.5" \
+  awk -F'\t' '$1 == "inflection_gamma" { d = $2 - sqrt(450); ok = (d < 1e-4 && d > -1e-4 && $3 == 7.5) } END { exit !ok }' "$tmp/infg.tsv"
+"$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2> "$tmp/err"; rc=$?
+check "--along gamma over runs of one Gamma: an error naming gamma" bash -c "[ $rc -ne 0 ] && grep -q gamma '$tmp/err'"
 "$bin/wetgran-orderparam" "$tmp/none.h5" > /dev/null 2> "$tmp/err"; rc=$?
 check "missing run file: non-zero exit, file named" bash -c "[ $rc -ne 0 ] && grep -q none.h5 '$tmp/err'"
 summary
