@@ -1,6 +1,7 @@
 #!/bin/bash
 # scripts/check-figures.sh: a value inside its band passes, outside fails naming figure, key,
-# value and band, a missing key or results file fails, and an xfail:BAND tolerance reports
+# value and band, a missing key or results file fails, a figure in FIGURES_SKIP is skipped,
+# and an xfail:BAND tolerance reports
 # XFAIL (or XPASS) without failing the run.
 set -u
 . "$(dirname "$0")/checks.sh"
@@ -29,4 +30,7 @@ check "the full profile's band applies with PROFILE=full (no full results: fails
 res figA $'z\t1.0\t0.01'
 WG_TOP=$tmp "$script" quick > "$tmp/out5"; rc=$?
 check "a key missing from results.tsv fails" bash -c "[ $rc -ne 0 ] && grep -q 'key x missing' '$tmp/out5'"
+FIGURES_SKIP="figA" WG_TOP=$tmp "$script" full > "$tmp/out6"; rc=$?
+check "a figure in FIGURES_SKIP is reported SKIP, not checked (only figB fails here)" \
+  bash -c "grep -q '^SKIP  figA' '$tmp/out6' && ! grep -q 'FAIL  figA' '$tmp/out6' && grep -q 'FAIL  figB' '$tmp/out6'"
 summary
