@@ -1,0 +1,299 @@
+#include "td.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static inline double td_mass(const wg_td *s, long i) { return s->mass ? s->mass[i] : 1.0; }
+
+static void ksum_add(wg_ksum *k, double x)
+{
+  double y = x - k->c, t = k->s + y;
+  k->c = (t - k->s) - y;
+  k->s = t;
+}
+
+static void min_image(const wg_td *s, double *d)
+{
+  for (int a = 0; a < s->par.dim; a++)
+    if (s->par.periodic[a]) d[a] -= s->par.box[a] * nearbyint(d[a] / s->par.box[a]);
+}
+
+static int cmp_pair(const void *a, const void *b)
+{
+  const wg_td_pair *p = a, *q = b;
+  if (p->i != q->i) return p->i < q->i ? -1 : 1;
+  return (p->j > q->j) - (p->j < q->j);
+}
+
+static double cutoff_extra(const wg_td *s) { return (s->par.f_b > 0 ? s->par.s_crit : 0) + s->par.skin; }
+
+/* The neighbour list from scratch: pairs closer than contact + s_crit + skin.  Periodic
+   coordinates are wrapped first.  Bonds carry over by pair identity. */
+static int build_list(wg_td *s)
+{
+  int dim = s->par.dim;
+  wg_td_pair *bonded = NULL;
+  long nb = 0;
+  if (s->par.f_b > 0) {
+    for (long k = 0; k < s->npair; k++) nb += s->pair[k].bonded;
+    if (nb) {
+      bonded = malloc(sizeof *bonded * (size_t)nb);
+      if (!bonded) return wg_error(WG_ENOMEM, "td", "cannot allocate %ld bonds", nb);
+      nb = 0;
+      for (long k = 0; k < s->npair; k++)
+        if (s->pair[k].bonded) bonded[nb++] = s->pair[k];
+      qsort(bonded, (size_t)nb, sizeof *bonded, cmp_pair);
+    }
+  }
+  for (long i = 0; i < s->n; i++)
+    for (int a = 0; a < dim; a++)
+      if (s->par.periodic[a]) s->r[3 * i + a] -= s->par.box[a] * floor(s->r[3 * i + a] / s->par.box[a]);
+  wg_cells_rebuild(&s->cells, s->n, s->r, 3);
+  double extra = cutoff_extra(s);
+  long cells[27];
+  s->npair = 0;
+  for (long i = 0; i < s->n; i++) {
+    int nc = wg_cells_stencil(&s->cells, s->cells.cell[i], cells);
+    for (int c = 0; c < nc; c++)
+      for (int32_t j = s->cells.head[cells[c]]; j >= 0; j = s->cells.next[j]) {
+        if (j <= i) continue;
+        double d[3] = {0, 0, 0}, d2 = 0, cut = s->radius[i] + s->radius[j] + extra;
+        for (int a = 0; a < dim; a++) d[a] = s->r[3 * j + a] - s->r[3 * i + a];
+        min_image(s, d);
+        for (int a = 0; a < dim; a++) d2 += d[a] * d[a];
+        if (d2 >= cut * cut) continue;
+        if (s->npair == s->pair_cap) {
+          long cap = s->pair_cap ? 2 * s->pair_cap : 8 * s->n + 16;
+          wg_td_pair *p = realloc(s->pair, sizeof *p * (size_t)cap);
+          if (!p) {
+            free(bonded);
+            return wg_error(WG_ENOMEM, "td", "cannot allocate %ld neighbour pairs", cap);
+          }
+          s->pair = p;
+          s->pair_cap = cap;
+        }
+        wg_td_pair q = {.i = (int32_t)i, .j = j, .bonded = 0};
+        if (nb && bsearch(&q, bonded, (size_t)nb, sizeof *bonded, cmp_pair)) q.bonded = 1;
+        s->pair[s->npair++] = q;
+      }
+  }
+  /* a bonded pair is always within the cut-off (its gap <= s_crit, moves < skin): check */
+  long kept = 0;
+  for (long k = 0; k < s->npair; k++) kept += s->pair[k].bonded;
+  free(bonded);
+  if (kept != nb) return wg_error(WG_EFAIL, "td", "neighbour list lost %ld bonds at t = %g", nb - kept, s->t);
+  memcpy(s->r_built, s->r, sizeof *s->r * 3 * (size_t)s->n);
+  s->rebuilds++;
+  return WG_OK;
+}
+
+static int need_rebuild(const wg_td *s)
+{
+  double lim = 0.25 * s->par.skin * s->par.skin;
+  for (long k = 0; k < 3 * s->n; k += 3) {
+    double d2 = 0;
+    for (int a = 0; a < s->par.dim; a++) {
+      double d = s->r[k + a] - s->r_built[k + a];
+      d2 += d * d;
+    }
+    if (d2 > lim) return 1;
+  }
+  return 0;
+}
+
+/* Forces at the current positions and the velocities vel (in Verlet: predicted at the full
+   step), the bond updates they imply, and the energies and powers for the ledger. */
+static void forces(wg_td *s, const double *vel)
+{
+  int dim = s->par.dim, up = s->up, wet = s->par.f_b > 0;
+  memset(s->f, 0, sizeof *s->f * 3 * (size_t)s->n);
+  double u_contact = 0, u_bond = 0, p_wall = 0, p_diss = 0;
+  for (long i = 0; i < s->n; i++) s->f[3 * i + up] = -s->par.g * td_mass(s, i);
+  for (long k = 0; k < s->npair; k++) {
+    wg_td_pair *p = &s->pair[k];
+    long i = p->i, j = p->j;
+    double d[3] = {0, 0, 0}, dist = 0;
+    for (int a = 0; a < dim; a++) d[a] = s->r[3 * j + a] - s->r[3 * i + a];
+    min_image(s, d);
+    for (int a = 0; a < dim; a++) dist += d[a] * d[a];
+    dist = sqrt(dist);
+    double gap = dist - s->radius[i] - s->radius[j];
+    if (gap > 0 && !p->bonded) continue;
+    double nrm[3] = {0, 0, 0}, gapdot = 0;
+    for (int a = 0; a < dim; a++) {
+      nrm[a] = d[a] / dist;
+      gapdot += (vel[3 * j + a] - vel[3 * i + a]) * nrm[a];
+    }
+    if (wet) {
+      if (p->bonded && gap > s->par.s_crit) { /* rupture: the bond energy F_B gap goes */
+        p->bonded = 0;
+        s->ruptures++;
+        ksum_add(&s->dissipated_rupt, s->par.f_b * gap);
+      } else if (!p->bonded && gap < 0) { /* capture at contact */
+        p->bonded = 1;
+        s->captures++;
+        ksum_add(&s->dissipated_rupt, -s->par.f_b * gap);
+      }
+    }
+    double fn = 0; /* along nrm on j (repulsive > 0) */
+    if (gap < 0) {
+      double mi = td_mass(s, i), mj = td_mass(s, j), fel, uel;
+      double reff = s->radius[i] * s->radius[j] / (s->radius[i] + s->radius[j]);
+      fn = wg_contact_force(&s->par.pp, -gap, -gapdot, reff, mi * mj / (mi + mj), &fel, &uel);
+      u_contact += uel;
+      p_diss += (fn - fel) * -gapdot;
+    }
+    if (p->bonded) {
+      fn -= s->par.f_b;
+      u_bond += s->par.f_b * gap;
+    }
+    for (int a = 0; a < dim; a++) {
+      s->f[3 * j + a] += fn * nrm[a];
+      s->f[3 * i + a] -= fn * nrm[a];
+    }
+  }
+  for (int w = 0; w < s->par.nwalls; w++) {
+    const wg_wall *wl = &s->par.wall[w];
+    double zw = wg_wall_position(wl, s->t), vw = wg_wall_velocity(wl, s->t);
+    for (long i = 0; i < s->n; i++) {
+      double gap = wl->side * (s->r[3 * i + up] - zw) - s->radius[i];
+      if (gap >= 0) continue;
+      double xidot = -wl->side * (vel[3 * i + up] - vw), fel, uel;
+      double fn = wg_contact_force(&s->par.pw, -gap, xidot, s->radius[i], td_mass(s, i), &fel, &uel);
+      s->f[3 * i + up] += wl->side * fn;
+      u_contact += uel;
+      p_wall += wl->side * fn * vw;
+      p_diss += (fn - fel) * xidot;
+    }
+  }
+  s->u_contact = u_contact;
+  s->u_bond = u_bond;
+  s->p_wall = p_wall;
+  s->p_diss = p_diss;
+}
+
+int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r,
+                      const double *v, const double *radius, const double *mass, double t0)
+{
+  memset(s, 0, sizeof *s);
+  s->par = *par;
+  s->up = par->dim - 1;
+  s->n = n;
+  s->t = s->t0 = t0;
+  size_t n3 = 3 * (size_t)n;
+  s->r = calloc(n3, sizeof *s->r);
+  s->v = calloc(n3, sizeof *s->v);
+  s->f = calloc(n3, sizeof *s->f);
+  s->vp = calloc(n3, sizeof *s->vp);
+  s->r_built = calloc(n3, sizeof *s->r_built);
+  s->radius = malloc(sizeof *s->radius * (size_t)n);
+  if (mass) s->mass = malloc(sizeof *s->mass * (size_t)n);
+  if (!s->r || !s->v || !s->f || !s->vp || !s->r_built || !s->radius || (mass && !s->mass)) {
+    wg_td_free(s);
+    return wg_error(WG_ENOMEM, "td", "cannot allocate %ld particles", n);
+  }
+  for (long i = 0; i < n; i++) {
+    for (int a = 0; a < par->dim; a++) {
+      s->r[3 * i + a] = r[3 * i + a];
+      s->v[3 * i + a] = v[3 * i + a];
+    }
+    s->radius[i] = radius[i];
+    if (s->radius[i] > s->r_max) s->r_max = s->radius[i];
+    if (mass) s->mass[i] = mass[i];
+  }
+  double lo[3], len[3];
+  for (int a = 0; a < 3; a++) {
+    lo[a] = par->periodic[a] ? 0 : par->lo[a];
+    len[a] = par->periodic[a] ? par->box[a] : par->hi[a] - par->lo[a];
+  }
+  int st = wg_cells_alloc(&s->cells, par->dim, lo, len, par->periodic, 2 * s->r_max + cutoff_extra(s), n);
+  if (st == WG_OK) st = build_list(s);
+  if (st != WG_OK) {
+    wg_td_free(s);
+    return st;
+  }
+  forces(s, s->v);
+  double k, u;
+  wg_td_energy(s, &k, &u);
+  s->e0 = k + u;
+  memset(&s->dissipated_rupt, 0, sizeof s->dissipated_rupt); /* bonds made at t0 are in e0 */
+  return WG_OK;
+}
+
+void wg_td_free(wg_td *s)
+{
+  free(s->r);
+  free(s->v);
+  free(s->f);
+  free(s->vp);
+  free(s->r_built);
+  free(s->radius);
+  free(s->mass);
+  free(s->pair);
+  if (s->cells.head) wg_cells_free(&s->cells);
+  memset(s, 0, sizeof *s);
+}
+
+/* Velocity Verlet.  Velocity-dependent forces (dashpots) see the velocity predicted at the
+   full step, v(t) + dt f(t) / m, which keeps the scheme second order in the damping; the
+   ledger's powers are integrated by the trapezoid rule between force evaluations. */
+int wg_td_advance(wg_td *s, double t_stop)
+{
+  double dt = s->par.dt;
+  while (s->t < t_stop - 0.5 * dt) {
+    double p_wall0 = s->p_wall, p_diss0 = s->p_diss;
+    for (long i = 0; i < s->n; i++) {
+      double h = 0.5 * dt / td_mass(s, i);
+      for (int a = 0; a < s->par.dim; a++) {
+        s->v[3 * i + a] += h * s->f[3 * i + a];
+        s->r[3 * i + a] += dt * s->v[3 * i + a];
+        s->vp[3 * i + a] = s->v[3 * i + a] + h * s->f[3 * i + a];
+      }
+    }
+    s->steps++;
+    s->t = s->t0 + (double)s->steps * dt; /* no accumulated round-off */
+    if (need_rebuild(s)) {
+      int st = build_list(s);
+      if (st != WG_OK) return st;
+    }
+    forces(s, s->vp);
+    for (long i = 0; i < s->n; i++) {
+      double h = 0.5 * dt / td_mass(s, i);
+      for (int a = 0; a < s->par.dim; a++) s->v[3 * i + a] += h * s->f[3 * i + a];
+    }
+    ksum_add(&s->injected_wall, 0.5 * (p_wall0 + s->p_wall) * dt);
+    ksum_add(&s->dissipated, 0.5 * (p_diss0 + s->p_diss) * dt);
+  }
+  return WG_OK;
+}
+
+void wg_td_energy(const wg_td *s, double *kinetic, double *potential)
+{
+  double k = 0, u = 0;
+  for (long i = 0; i < s->n; i++) {
+    double v2 = 0;
+    for (int a = 0; a < s->par.dim; a++) v2 += s->v[3 * i + a] * s->v[3 * i + a];
+    k += 0.5 * td_mass(s, i) * v2;
+    u += td_mass(s, i) * s->par.g * s->r[3 * i + s->up];
+  }
+  *kinetic = k;
+  *potential = u + s->u_contact + s->u_bond;
+}
+
+double wg_td_ledger_residual(const wg_td *s)
+{
+  double k, u;
+  wg_td_energy(s, &k, &u);
+  double in = s->injected_wall.s + s->injected_wall.c;
+  double out = s->dissipated.s + s->dissipated.c + s->dissipated_rupt.s + s->dissipated_rupt.c;
+  double scale = fmax(fmax(fabs(k + u), fabs(s->e0)), fmax(fabs(in), fabs(out)));
+  return fabs(k + u - s->e0 - in + out) / fmax(scale, 1e-300);
+}
+
+long wg_td_bond_total(const wg_td *s)
+{
+  long b = 0;
+  for (long k = 0; k < s->npair; k++) b += s->pair[k].bonded;
+  return b;
+}

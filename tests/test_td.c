@@ -1,0 +1,204 @@
+/* The time-driven engine against closed forms: restitution and contact time of the linear
+   spring-dashpot (any reduced mass), the elastic Hertz contact time, a ball bouncing on a
+   floor, the minimal capillary model's rupture energy E_cb = F_B s_crit and a bound pair that
+   stays bound, and the energy ledger of a shaken wet bed converging faster than dt (contacts
+   start between steps, which costs an energy error ~ (pi dt / t_c)^2 per contact). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "tharness.h"
+#include "td.h"
+
+/* 2D, periodic 20 x 20 box, no gravity, no walls; the linear law with e, t_c. */
+static wg_td_params free_params(double e, double t_c)
+{
+  wg_td_params p;
+  memset(&p, 0, sizeof p);
+  p.dim = 2;
+  p.box[0] = p.box[1] = 20;
+  p.periodic[0] = p.periodic[1] = 1;
+  p.pp = p.pw = wg_contact_linear(e, t_c, 0.5);
+  p.dt = t_c / 50;
+  p.skin = 0.2;
+  return p;
+}
+
+/* Two particles approaching head-on along x at relative speed u; returns the relative speed
+   after the contact and the contact's duration (first to last step with overlap). */
+static double head_on(const wg_td_params *par, const double *rad, const double *m, double u,
+                      double *duration)
+{
+  double r[6] = {8, 10, 0, 8 + rad[0] + rad[1] + 0.05, 10, 0}, v[6] = {0.5 * u, 0, 0, -0.5 * u, 0, 0};
+  wg_td s;
+  if (wg_td_alloc_state(&s, par, 2, r, v, rad, m, 0) != WG_OK) return NAN;
+  double t_in = -1, t_out = -1;
+  while (s.t < 1) {
+    wg_td_advance(&s, s.t + par->dt);
+    double gap = s.r[3] - s.r[0] - rad[0] - rad[1];
+    if (gap < 0 && t_in < 0) t_in = s.t;
+    if (gap < 0) t_out = s.t;
+  }
+  *duration = t_out - t_in + par->dt;
+  double du = s.v[3] - s.v[0];
+  wg_td_free(&s);
+  return du;
+}
+
+static void linear_contact(void)
+{
+  double rad[2] = {0.5, 0.5}, dur;
+  wg_td_params p = free_params(0.9, 0.01);
+  /* the dashpot force jumps at the start of a contact, which falls between steps: the
+     restitution converges to e at first order in dt */
+  double du = head_on(&p, rad, NULL, 2.0, &dur);
+  double err50 = fabs(du / 2.0 - 0.9);
+  TH_CHECK(err50 < 5e-3, "linear law: restitution %.5f vs e = 0.9 at dt = t_c/50", du / 2.0);
+  TH_CLOSE("linear law: contact time t_c = 0.01 (to a step)", dur, 0.01, 0, 1.5 * p.dt);
+  p.dt = 0.01 / 200;
+  du = head_on(&p, rad, NULL, 2.0, &dur);
+  double err200 = fabs(du / 2.0 - 0.9);
+  TH_CHECK(err200 < 1.5e-3 && err200 < err50 / 3, "at dt = t_c/200: %.5f (error down by %.1f for dt / 4)", du / 2.0, err50 / err200);
+  p.dt = 0.01 / 50;
+  double m[2] = {1.0, 3.0};
+  du = head_on(&p, rad, m, 2.0, &dur);
+  TH_CLOSE("linear law: e = 0.9 also for m_eff = 0.75 (damping per pair)", du / 2.0, 0.9, 5e-3, 0);
+  TH_CLOSE("linear law: contact time scales as sqrt(m_eff / m_ref)", dur, 0.01 * sqrt(1.5), 0, 1.5 * p.dt);
+  p = free_params(1.0, 0.01);
+  du = head_on(&p, rad, NULL, 2.0, &dur);
+  TH_CLOSE("linear law, e = 1: relative speed restored", du / 2.0, 1.0, 1e-4, 0);
+}
+
+/* Elastic Hertz: 1/2 m_eff u^2 = (2/5) K sqrt(R_eff) xi_max^(5/2), t_c = 2.9432 xi_max / u. */
+static void hertz_contact(void)
+{
+  double rad[2] = {0.5, 0.5}, dur, u = 1.0, kh = 1e5;
+  wg_td_params p = free_params(1.0, 0.01);
+  p.pp = wg_contact_hertz(kh, 0);
+  double xi_max = pow(5 * 0.5 * u * u / (4 * kh * sqrt(0.25)), 0.4), tc = 2.9432 * xi_max / u;
+  p.dt = tc / 200;
+  double du = head_on(&p, rad, NULL, u, &dur);
+  TH_CLOSE("Hertz, A_d = 0: elastic", du / u, 1.0, 1e-4, 0);
+  TH_CLOSE("Hertz: contact time 2.9432 xi_max / u", dur, tc, 0, 1.5 * p.dt);
+  p.pp = wg_contact_hertz(kh, 1e-3);
+  du = head_on(&p, rad, NULL, u, &dur);
+  TH_CHECK(du / u < 0.999 && du / u > 0.5, "Hertz with A_d = 1e-3: inelastic, e = %.4f", du / u);
+}
+
+/* A ball dropped on a resting floor (wall law e = 0.8) leaves it at 0.8 of its impact speed. */
+static void floor_bounce(void)
+{
+  wg_td_params p = free_params(1.0, 0.01);
+  p.periodic[1] = 0;
+  p.lo[1] = -1;
+  p.hi[1] = 30;
+  p.g = 1;
+  p.nwalls = 1;
+  p.wall[0] = (wg_wall){.c = 0, .A = 0, .omega = 1, .side = +1};
+  p.pw = wg_contact_linear(0.8, 0.01, 1.0);
+  double r[3] = {10, 5.5, 0}, v[3] = {0, 0, 0}, rad[1] = {0.5};
+  wg_td s;
+  TH_CHECK(wg_td_alloc_state(&s, &p, 1, r, v, rad, NULL, 0) == WG_OK, "ball above the floor");
+  double u_in = NAN, u_out = NAN;
+  int touched = 0;
+  while (s.t < 4 && isnan(u_out)) {
+    double vz = s.v[1];
+    wg_td_advance(&s, s.t + p.dt);
+    if (!touched && s.r[1] < 0.5) touched = 1, u_in = -vz;
+    if (touched && s.r[1] > 0.5) u_out = s.v[1];
+  }
+  /* gravity acts during the contact too: a correction of order g t_c / u = 0.4 % */
+  TH_CLOSE("ball leaves the floor at e_wall times its impact speed", u_out, 0.8 * u_in, 1e-2, 0);
+  TH_CHECK(wg_td_ledger_residual(&s) < 1e-3, "ledger of the bounce closes: residual %.2e", wg_td_ledger_residual(&s));
+  wg_td_free(&s);
+}
+
+/* Minimal capillary model: a pair touching (bond forms at contact) and separating at speed u
+   loses F_B s_crit when the bond breaks; below that energy it stays bound. */
+static void capillary_pair(void)
+{
+  double f_b = 4, s_crit = 0.0711, e_cb = f_b * s_crit, mu = 0.5;
+  wg_td_params p = free_params(1.0, 0.005);
+  p.f_b = f_b;
+  p.s_crit = s_crit;
+  double rad[2] = {0.5, 0.5};
+  double u = sqrt(2 * 3 * e_cb / mu); /* 1/2 mu u^2 = 3 E_cb */
+  double r[6] = {8, 10, 0, 8.999999, 10, 0}, v[6] = {-0.5 * u, 0, 0, 0.5 * u, 0, 0};
+  wg_td s;
+  TH_CHECK(wg_td_alloc_state(&s, &p, 2, r, v, rad, NULL, 0) == WG_OK, "touching pair");
+  TH_CHECK(s.captures == 1 && wg_td_bond_total(&s) == 1, "the pair bonds at contact");
+  wg_td_advance(&s, 1);
+  double du = s.v[3] - s.v[0];
+  TH_CHECK(s.ruptures == 1 && wg_td_bond_total(&s) == 0, "the bond breaks once (ruptures %llu)", s.ruptures);
+  TH_CLOSE("kinetic energy after rupture: 1/2 mu u^2 - E_cb", 0.5 * mu * du * du, 2 * e_cb, 1e-2, 0);
+  TH_CHECK(wg_td_ledger_residual(&s) < 1e-3, "ledger closes across the rupture: residual %.2e", wg_td_ledger_residual(&s));
+  wg_td_free(&s);
+
+  u = sqrt(2 * 0.5 * e_cb / mu); /* half the bond energy: bound */
+  double v2[6] = {-0.5 * u, 0, 0, 0.5 * u, 0, 0};
+  TH_CHECK(wg_td_alloc_state(&s, &p, 2, r, v2, rad, NULL, 0) == WG_OK, "slow pair");
+  double gap_max = 0;
+  while (s.t < 5) {
+    wg_td_advance(&s, s.t + p.dt);
+    double gap = s.r[3] - s.r[0] - 1.0;
+    if (gap > gap_max) gap_max = gap;
+  }
+  TH_CHECK(s.ruptures == 0 && wg_td_bond_total(&s) == 1, "with 1/2 mu u^2 = E_cb / 2 the pair stays bound");
+  TH_CLOSE("its largest gap: 1/2 mu u^2 / F_B = s_crit / 2", gap_max, 0.5 * s_crit, 0.02, 0);
+  wg_td_free(&s);
+}
+
+/* A wet, inelastic bed of 60 disks on a shaken floor under a lid: the ledger residual after
+   4 time units, at two time steps. */
+static double shaken_bed_residual(double dt_factor, unsigned long long *ruptures)
+{
+  wg_td_params p = free_params(0.8, 0.01);
+  p.dt = 0.01 / dt_factor;
+  p.periodic[1] = 0;
+  p.lo[1] = -1;
+  p.hi[1] = 12;
+  p.g = 1;
+  p.nwalls = 2;
+  double gamma = 3, a = 0.3, w = sqrt(gamma / a);
+  p.wall[0] = (wg_wall){.c = 0, .A = a, .omega = w, .side = +1};
+  p.wall[1] = (wg_wall){.c = 10, .A = a, .omega = w, .side = -1};
+  p.pw = wg_contact_linear(0.9, 0.01, 1.0);
+  p.f_b = 4;
+  p.s_crit = 0.0711;
+  double r[180], v[180], rad[60];
+  for (int k = 0; k < 60; k++) {
+    r[3 * k] = 0.5 + (k % 20);
+    r[3 * k + 1] = 0.9 + 1.1 * (k / 20);
+    r[3 * k + 2] = 0;
+    v[3 * k] = 0.3 * sin(1.7 * k);
+    v[3 * k + 1] = 0.3 * cos(2.3 * k);
+    v[3 * k + 2] = 0;
+    rad[k] = 0.45 + 0.01 * (k % 7);
+  }
+  wg_td s;
+  if (wg_td_alloc_state(&s, &p, 60, r, v, rad, NULL, 0) != WG_OK) return NAN;
+  wg_td_advance(&s, 4);
+  double res = wg_td_ledger_residual(&s);
+  *ruptures = s.ruptures;
+  wg_td_free(&s);
+  return res;
+}
+
+static void ledger_convergence(void)
+{
+  unsigned long long n1, n2;
+  double r1 = shaken_bed_residual(25, &n1), r2 = shaken_bed_residual(50, &n2);
+  TH_CHECK(n1 > 0 && n2 > 0, "the shaken bed breaks bonds (%llu, %llu ruptures)", n1, n2);
+  TH_CHECK(r1 < 1e-2 && r2 < 3e-3, "shaken wet bed: ledger residual %.2e (dt = t_c/25), %.2e (t_c/50)", r1, r2);
+  TH_CHECK(r2 < r1 / 2.4, "the residual falls faster than dt (ratio %.2f for dt halved)", r1 / r2);
+}
+
+int main(void)
+{
+  linear_contact();
+  hertz_contact();
+  floor_bounce();
+  capillary_pair();
+  ledger_convergence();
+  return th_summary();
+}
