@@ -1,5 +1,7 @@
 #include "td.h"
 
+#include "init.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -296,4 +298,75 @@ long wg_td_bond_total(const wg_td *s)
   long b = 0;
   for (long k = 0; k < s->npair; k++) b += s->pair[k].bonded;
   return b;
+}
+
+wg_td_options wg_td_default_options(void)
+{
+  wg_td_options o = {.law = WG_CONTACT_LINEAR, .t_c = 0.005, .steps_per_tc = 50, .skin = 0.1,
+                     .hertz_k = 1e5, .hertz_ad = 0};
+  return o;
+}
+
+void wg_td_params_from_scene(const wg_scene *sc, const wg_td_options *opt, wg_td_params *out)
+{
+  int dim = sc->dim, up = dim - 1;
+  wg_td_params p;
+  memset(&p, 0, sizeof p);
+  p.dim = dim;
+  p.g = sc->gravity;
+  double len[3] = {sc->lx, dim == 3 ? sc->ly : sc->height, sc->height};
+  for (int a = 0; a < dim; a++) {
+    p.box[a] = len[a];
+    p.periodic[a] = a < up || sc->container == WG_CONTAINER_PERIODIC;
+  }
+  if (sc->container == WG_CONTAINER_SHAKER) {
+    p.nwalls = 2;
+    p.wall[0] = (wg_wall){0.0, sc->amplitude, sc->omega > 0 ? sc->omega : 1, +1};
+    p.wall[1] = (wg_wall){sc->height, sc->amplitude, sc->omega > 0 ? sc->omega : 1, -1};
+    p.lo[up] = -sc->amplitude - 1;
+    p.hi[up] = sc->height + sc->amplitude + 1;
+  }
+  if (opt->law == WG_CONTACT_HERTZ) {
+    p.pp = p.pw = wg_contact_hertz(opt->hertz_k, opt->hertz_ad);
+  } else {
+    p.pp = wg_contact_linear(sc->eps, opt->t_c, 0.5);      /* two unit masses */
+    p.pw = wg_contact_linear(sc->eps_wall, opt->t_c, 1.0); /* a unit mass on a wall */
+  }
+  if (sc->s_crit > 0) {
+    p.f_b = sc->f_b;
+    p.s_crit = sc->s_crit;
+  }
+  p.dt = opt->t_c / opt->steps_per_tc;
+  p.skin = opt->skin;
+  *out = p;
+}
+
+int wg_td_alloc(wg_td *s, const wg_scene *sc, const wg_td_options *opt)
+{
+  wg_td_params p;
+  wg_td_params_from_scene(sc, opt, &p);
+  long n = sc->n;
+  wg_particle *q = malloc(sizeof *q * (size_t)n);
+  double *mass = sc->mass_scaling ? malloc(sizeof *mass * (size_t)n) : NULL;
+  double *r = malloc(sizeof *r * 3 * (size_t)n), *v = malloc(sizeof *v * 3 * (size_t)n);
+  double *rad = malloc(sizeof *rad * (size_t)n);
+  int st = (!q || !r || !v || !rad || (sc->mass_scaling && !mass))
+               ? wg_error(WG_ENOMEM, "td", "cannot allocate %ld particles", n)
+               : wg_init_state(sc, q, mass);
+  if (st == WG_OK) {
+    for (long i = 0; i < n; i++) {
+      for (int a = 0; a < 3; a++) {
+        r[3 * i + a] = q[i].r[a];
+        v[3 * i + a] = q[i].v[a];
+      }
+      rad[i] = q[i].radius;
+    }
+    st = wg_td_alloc_state(s, &p, n, r, v, rad, mass, 0);
+  }
+  free(q);
+  free(mass);
+  free(r);
+  free(v);
+  free(rad);
+  return st;
 }

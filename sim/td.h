@@ -63,6 +63,27 @@ typedef struct wg_td {
   double p_wall, p_diss;    /* their powers there */
 } wg_td;
 
+/* Settings of the time-driven engine that a scene does not yet carry (scene keys to come):
+   the contact law, the contact time t_c of the linear law for a pair of unit masses, the
+   time step as a fraction of it, the skin, and Hertz's K and A_d. */
+typedef struct wg_td_options {
+  wg_contact_law law;
+  double t_c;          /* [sqrt(d/g)], default 0.005 */
+  double steps_per_tc; /* dt = t_c / steps_per_tc, default 50 */
+  double skin;         /* [d], default 0.1 */
+  double hertz_k, hertz_ad;
+} wg_td_options;
+wg_td_options wg_td_default_options(void);
+
+/* The engine's parameters for a finished scene (container, gravity, driving, eps and
+   eps_wall as the laws' restitution, F_B and s_crit). */
+void wg_td_params_from_scene(const wg_scene *sc, const wg_td_options *opt, wg_td_params *p);
+
+/* Set up from a finished scene (container, gravity, driving, eps and eps_wall as the laws'
+   restitution, F_B and s_crit) with the event-driven engine's initial state: the same
+   lattice, diameters and velocities from the same seed. */
+int wg_td_alloc(wg_td *s, const wg_scene *sc, const wg_td_options *opt);
+
 /* Allocate for n particles and copy positions, velocities, radii, masses (may be NULL: unit
    masses); time t0.  Builds the neighbour list and the first forces. */
 int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r,

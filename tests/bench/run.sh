@@ -42,4 +42,6 @@ for n in 1000 10000 100000 1000000; do
 done
 echo "== exact wall solver against the brute-force scan at T_driv/1000 (same trajectories, same run)"
 "$benchdir/bench_wall" | tee "$out/bench_wall.tsv"
-echo "results: $tsv, $out/bench_wall.tsv"
+echo "== time-driven engine: particle-steps/s of a 3D bed of 1e4 spheres; cost against event-driven for one state"
+"$benchdir/bench_td" | tee "$out/bench_td.tsv"
+echo "results: $tsv, $out/bench_wall.tsv, $out/bench_td.tsv"

@@ -1,0 +1,110 @@
+/* Benchmark of the time-driven engine (issue 4):
+     1. particle-steps per second for a 3D vibrated bed of 10^4 spheres (3.24 per d^2 on
+        55.6 d x 55.6 d, 8 d high, Gamma = 4), dry and wet (F_B = 16 m g, s_crit = 0.0711);
+     2. time-driven against event-driven cost for the same fluid-gas coexistence state, the
+        2D shaker of thesis Fig. 3.2 (1200 disks, Gamma = 15, E* = 1.42): the event-driven
+        run goes to t = 100 untimed, is timed over the next sim_time_2d, and hands its state
+        to the time-driven engine, timed over the same span: wall-clock seconds per time
+        unit and their ratio, in one run (thesis: event-driven faster by more than 100x).
+   Time-driven settings: linear law, t_c = 0.005, dt = t_c / 50, skin 0.1 (td.h defaults).
+   The 3D bed falls for 5 time units from its lattice start before it is timed.
+   Output: tab-separated rows  case, engine, n, sim_time, wall_s, rate, unit; then the
+   ratio.  Usage: bench_td [sim_time_3d [sim_time_2d]]. */
+#define _POSIX_C_SOURCE 200809L
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <time.h>
+
+#include "ed.h"
+#include "td.h"
+
+#define SETTLE 5.0   /* time units before the 3D bed is timed */
+#define WARM 100.0   /* time units of the event-driven run before the comparison */
+
+static double now_s(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_MONOTONIC, &ts);
+  return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static int scene(wg_scene *sc, const char *const *kv)
+{
+  wg_scene_init(sc);
+  for (int k = 0; kv[k]; k++)
+    if (wg_scene_set_override(sc, kv[k]) != WG_OK) return 1;
+  return wg_scene_finish(sc) != WG_OK;
+}
+
+static void td_bed(const char *name, const char *const *kv, double t_sim)
+{
+  wg_scene sc;
+  if (scene(&sc, kv)) exit(1);
+  wg_td_options opt = wg_td_default_options();
+  wg_td s;
+  if (wg_td_alloc(&s, &sc, &opt) != WG_OK) exit(1);
+  wg_td_advance(&s, SETTLE); /* let the lattice start fall into a bed, out of the timing */
+  unsigned long long steps0 = s.steps;
+  double w0 = now_s();
+  wg_td_advance(&s, SETTLE + t_sim);
+  double w = now_s() - w0, ps = (double)(s.steps - steps0) * (double)s.n;
+  printf("%s\ttd\t%ld\t%g\t%.3f\t%.4g\tparticle_steps_per_s\n", name, s.n, t_sim, w, ps / w);
+  printf("# %s: %llu steps, %llu list rebuilds, %ld pairs in the list, %ld bonds, ledger residual %.2e\n",
+         name, s.steps - steps0, s.rebuilds, s.npair, wg_td_bond_total(&s), wg_td_ledger_residual(&s));
+  wg_td_free(&s);
+}
+
+int main(int argc, char **argv)
+{
+  double t3 = argc > 1 ? atof(argv[1]) : 0.5, t2 = argc > 2 ? atof(argv[2]) : 5;
+  printf("case\tengine\tn\tsim_time\twall_s\trate\tunit\n");
+  const char *bed_dry[] = {"dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
+                           "eps=0.9", "eps_wall=0.9", "gamma=4", "estar_d=2", "tg_init_abs=1",
+                           "seed=1", "t_end=1", NULL};
+  const char *bed_wet[] = {"dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
+                           "eps=0.9", "eps_wall=0.9", "gamma=4", "estar=2", "s_crit=0.0711",
+                           "f_b=16", "tg_init=1", "seed=1", "t_end=1", NULL};
+  td_bed("bed3d_N1e4_dry", bed_dry, t3);
+  td_bed("bed3d_N1e4_wet", bed_wet, t3);
+
+  const char *coex[] = {"dim=2", "n=1200", "lx=400", "height=9", "sigma_p=0.06", "s_crit=0.0711",
+                        "f_b=4", "gamma=15", "estar=1.42", "tg_init=20", "seed=1", "t_end=100", NULL};
+  wg_scene sc;
+  if (scene(&sc, coex)) return 1;
+  wg_ed ed;
+  if (wg_ed_alloc(&ed, &sc) != WG_OK) return 1;
+  wg_ed_advance(&ed, WARM); /* into coexistence, out of the timing */
+  double w0 = now_s();
+  wg_ed_advance(&ed, WARM + t2);
+  double w_ed = now_s() - w0;
+  printf("coexistence2d\ted\t%ld\t%g\t%.3f\t%.4g\twall_s_per_time_unit\n", ed.n, t2, w_ed, w_ed / t2);
+  /* the time-driven engine takes over the state the event-driven one has reached (bonds
+     form again at contact) */
+  long n = ed.n;
+  double *r = calloc(3 * (size_t)n, sizeof *r), *v = calloc(3 * (size_t)n, sizeof *v);
+  double *rad = malloc(sizeof *rad * (size_t)n);
+  if (!r || !v || !rad) return 1;
+  for (long id = 0; id < n; id++) {
+    wg_ed_position_of(&ed, id, ed.now, r + 3 * id, v + 3 * id);
+    rad[id] = ed.p[ed.slot[id]].radius;
+  }
+  wg_td_options opt = wg_td_default_options();
+  wg_td_params par;
+  wg_td_params_from_scene(&sc, &opt, &par);
+  wg_td td;
+  if (wg_td_alloc_state(&td, &par, n, r, v, rad, NULL, ed.now) != WG_OK) return 1;
+  wg_ed_free(&ed);
+  w0 = now_s();
+  wg_td_advance(&td, td.t + t2);
+  double w_td = now_s() - w0;
+  printf("coexistence2d\ttd\t%ld\t%g\t%.3f\t%.4g\twall_s_per_time_unit\n", td.n, t2, w_td, w_td / t2);
+  printf("# coexistence2d: time-driven / event-driven cost per simulated time = %.1f (%llu steps, %.4g particle-steps/s)\n",
+         w_td / w_ed, td.steps, (double)td.steps * (double)td.n / w_td);
+  wg_td_free(&td);
+  free(r);
+  free(v);
+  free(rad);
+  return 0;
+}
