@@ -48,6 +48,19 @@ check "--inflection of a two-run scan: the geometric middle sqrt(0.5 * 2.5) +- 1
 "$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold30.h5" "$tmp/cold.h5" > "$tmp/infg.tsv"
 check "--inflection --along gamma of a two-run scan in Gamma: sqrt(15 * 30) +- 7.5" \
   awk -F'\t' '$1 == "inflection_gamma" { d = $2 - sqrt(450); ok = (d < 1e-4 && d > -1e-4 && $3 == 7.5) } END { exit !ok }' "$tmp/infg.tsv"
+# --log-contrast: the dn cut is Otsu's two-class cut of log10 of the runs' contrasts,
+# recomputed here from the table's dn_cb column
+four="$tmp/cold.h5 $tmp/hot.h5 $tmp/settling.h5 $tmp/cold30.h5"
+"$bin/wetgran-orderparam" --calibrate --log-contrast $four > "$tmp/log.tsv" 2> /dev/null
+want=$(awk -F'\t' '!/^#/ && $1 != "file" && $15 > 0 { x[n++] = log($15) / log(10) }
+  END { for (i = 0; i < n; i++) for (j = i + 1; j < n; j++) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
+        for (i = 0; i < n; i++) tot += x[i]; best = -1
+        for (k = 1; k < n; k++) { left += x[k - 1]; m1 = left / k; m2 = (tot - left) / (n - k)
+          b = k * (n - k) * (m1 - m2) ^ 2; if (b > best && x[k] > x[k - 1]) { best = b; cut = (x[k - 1] + x[k]) / 2 } }
+        printf "%.6g", 10 ^ cut }' "$tmp/log.tsv")
+got=$(awk -F'\t' 'NR == 1 { print $6 }' "$tmp/log.tsv")
+check "--log-contrast: dn = 10^(Otsu cut of log10 dn_cb) = $want (got $got)" \
+  awk -v a="$got" -v b="$want" 'BEGIN { exit !(b > 0 && (a - b) / b < 1e-5 && (b - a) / b < 1e-5) }'
 "$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2> "$tmp/err"; rc=$?
 check "--along gamma over runs of one Gamma: an error naming gamma" bash -c "[ $rc -ne 0 ] && grep -q gamma '$tmp/err'"
 "$bin/wetgran-orderparam" "$tmp/none.h5" > /dev/null 2> "$tmp/err"; rc=$?
