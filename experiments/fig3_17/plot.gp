@@ -16,8 +16,8 @@ do for [k = 1:2] {
   set title "coexistence band inside the gas region, {/Symbol G} = 15"
   plot op using 6:18:(color(strcol(17))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
        op using 6:18 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (white coexisting, orange gas)", \
-       tr using (strcol(2) eq "fgc_g" ? $1 : 1/0):3:4 every ::1 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb "blue" title "A_{crit}: upper edge of the band", \
-       lo using 1:2:3 with yerrorbars pt 6 ps 1.5 lw 2 lc rgb "blue" title "lower edge (where gas lies below the band)", \
+       ed using 1:3:4 every ::1 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb "blue" title "A_{crit}: upper edge of the band", \
+       ed using 1:5:6 every ::1 with yerrorbars pt 6 ps 1.5 lw 2 lc rgb "blue" title "lower edge (where gas lies below the band)", \
        a + b * (1 - x) title sprintf("fit: A_{crit}/d = %.2f + %.2f (1 - {/Symbol e})", a, b) with lines lw 2 dt 2 lc rgb "blue", \
        0.24 - 3.61 * (x - 1) title "thesis: -3.61 ({/Symbol e} - 1) + 0.24" with lines lw 2 lc rgb "black", \
        0.24 - 1.72 * (x - 1) title "thesis: -1.72 ({/Symbol e} - 1) + 0.24" with lines lw 2 lc rgb "red"
