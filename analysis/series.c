@@ -9,14 +9,16 @@ static const char *default_cols[] = {
     "kinetic_energy", "potential_energy", "injected_wall", "dissipated_collisions",
     "dissipated_wall", "dissipated_ruptures", "ledger_residual", "temperature", "bridges",
     "collisions", "captures", "ruptures", "reflections", "wall_hits", "wall_enters",
-    "cell_crossings"};
+    "cell_crossings", "steps", "list_rebuilds"};
 
 static void usage(FILE *out)
 {
   fprintf(out,
           "Usage: wetgran-series RUN.h5 [COLUMN ...]\n"
           "Prints the time series of a wetgran-run file as a tab-separated table on stdout:\n"
-          "a header line, then one row per sample: time and the chosen columns (default: all).\n"
+          "a header line, then one row per sample: time and the chosen columns (default: all\n"
+          "that the run's engine records; event-driven: reflections, wall_enters,\n"
+          "cell_crossings; time-driven: steps, list_rebuilds).\n"
           "Columns: /observables/<name>/value of the run file; units are in the file.\n");
 }
 
@@ -27,14 +29,21 @@ int main(int argc, char **argv)
     return argc < 2 ? 2 : 0;
   }
   wg_h5_quiet();
-  const char **cols = default_cols;
-  int ncol = (int)(sizeof default_cols / sizeof *default_cols);
+  const char *present[sizeof default_cols / sizeof *default_cols];
+  const char **cols = present;
+  int ncol = 0;
+  hid_t f = wg_h5_open_read(argv[1]);
+  if (f < 0) return 1;
   if (argc > 2) {
     cols = (const char **)(argv + 2);
     ncol = argc - 2;
+  } else {
+    for (size_t c = 0; c < sizeof default_cols / sizeof *default_cols; c++) {
+      char path[256];
+      snprintf(path, sizeof path, "/observables/%s/value", default_cols[c]);
+      if (wg_h5_exists(f, path)) present[ncol++] = default_cols[c];
+    }
   }
-  hid_t f = wg_h5_open_read(argv[1]);
-  if (f < 0) return 1;
   int rank;
   hsize_t dims[8];
   if (wg_h5_dims(f, "/observables/temperature/time", &rank, dims) != WG_OK) {

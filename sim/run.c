@@ -1,4 +1,6 @@
-/* A run of the event-driven engine with its observers, checkpoints and run file. */
+/* A run of either engine with its observers, checkpoints and run file.  The observers see
+   the particles through a few accessors (particle(), bond_counts()); the engines differ only
+   in the time-series columns they fill, their checkpoint state and their summary line. */
 #include "run.h"
 
 #include <errno.h>
@@ -19,33 +21,51 @@
 /* Columns of the time series, in storage order: each becomes /observables/<name>. */
 typedef struct series_column {
   const char *name, *unit, *description;
+  int only;              /* ONLY_ED / ONLY_TD: written for one engine; 0: both */
+  const char *td_description; /* the time-driven engine's meaning, where it differs */
 } series_column;
+
+enum { ONLY_ED = 1, ONLY_TD = 2 };
 
 enum {
   COL_TIME, COL_KINETIC, COL_POTENTIAL, COL_INJ_WALL, COL_DIS_COLL, COL_DIS_WALL, COL_DIS_RUPT,
   COL_RESIDUAL, COL_TG, COL_BRIDGES, COL_COLLISIONS, COL_CAPTURES, COL_RUPTURES,
-  COL_REFLECTIONS, COL_WALL_HITS, COL_WALL_ENTERS, COL_CELL_CROSSINGS, NCOL
+  COL_REFLECTIONS, COL_WALL_HITS, COL_WALL_ENTERS, COL_CELL_CROSSINGS, COL_STEPS, COL_REBUILDS,
+  NCOL
 };
 
 static const series_column columns[NCOL] = {
-    {"time", "sqrt(d/g)", "simulated time of the sample"},
-    {"kinetic_energy", "m g d", "total kinetic energy, sum of m v^2 / 2"},
-    {"potential_energy", "m g d", "total potential energy in gravity, sum of m g z (z = 0 at the floor's mean position)"},
-    {"injected_wall", "m g d", "work done on the particles by the moving walls since t = 0"},
-    {"dissipated_collisions", "m g d", "energy lost in inelastic particle collisions since t = 0 (Eq. 2.6)"},
-    {"dissipated_wall", "m g d", "energy lost in inelastic wall collisions since t = 0"},
-    {"dissipated_ruptures", "m g d", "energy taken by capillary bridge ruptures since t = 0, E_cb each"},
-    {"ledger_residual", "1", "|E(t) - E(0) - injected + dissipated| / energy scale of the run"},
-    {"temperature", "m g d", "granular temperature T_g = sum m |v - V_cm|^2 / (N D) (Eq. 3.2)"},
-    {"bridges", "1", "number of capillary bridges"},
-    {"collisions", "1", "particle-particle collisions since t = 0"},
-    {"captures", "1", "capillary bridges formed since t = 0"},
-    {"ruptures", "1", "capillary bridges ruptured since t = 0"},
-    {"reflections", "1", "bonded pairs reflected at gap s_crit since t = 0"},
-    {"wall_hits", "1", "particle-wall collisions since t = 0"},
-    {"wall_enters", "1", "entries into a wall's reach (exact wall solver calls) since t = 0"},
-    {"cell_crossings", "1", "cell crossings (bookkeeping events) since t = 0"},
+    {"time", "sqrt(d/g)", "simulated time of the sample", 0, NULL},
+    {"kinetic_energy", "m g d", "total kinetic energy, sum of m v^2 / 2", 0, NULL},
+    {"potential_energy", "m g d", "total potential energy in gravity, sum of m g z (z = 0 at the floor's mean position)", 0,
+     "potential energy: gravity (sum of m g z, z = 0 at the floor's mean position) + elastic energy of the overlaps + bond energy (F_B gap, or Eq. 2.9 integrated)"},
+    {"injected_wall", "m g d", "work done on the particles by the moving walls since t = 0", 0, NULL},
+    {"dissipated_collisions", "m g d", "energy lost in inelastic particle collisions since t = 0 (Eq. 2.6)", 0,
+     "energy lost in the dashpots of particle contacts since t = 0"},
+    {"dissipated_wall", "m g d", "energy lost in inelastic wall collisions since t = 0", 0,
+     "energy lost in the dashpots of wall contacts since t = 0"},
+    {"dissipated_ruptures", "m g d", "energy taken by capillary bridge ruptures since t = 0, E_cb each", 0,
+     "bond energy taken by ruptures (minus that given by captures at an overlap) since t = 0"},
+    {"ledger_residual", "1", "|E(t) - E(0) - injected + dissipated| / energy scale of the run", 0, NULL},
+    {"temperature", "m g d", "granular temperature T_g = sum m |v - V_cm|^2 / (N D) (Eq. 3.2)", 0, NULL},
+    {"bridges", "1", "number of capillary bridges", 0, NULL},
+    {"collisions", "1", "particle-particle collisions since t = 0", 0,
+     "particle-particle contacts begun since t = 0"},
+    {"captures", "1", "capillary bridges formed since t = 0", 0, NULL},
+    {"ruptures", "1", "capillary bridges ruptured since t = 0", 0, NULL},
+    {"reflections", "1", "bonded pairs reflected at gap s_crit since t = 0", ONLY_ED, NULL},
+    {"wall_hits", "1", "particle-wall collisions since t = 0", 0, "particle-wall contacts begun since t = 0"},
+    {"wall_enters", "1", "entries into a wall's reach (exact wall solver calls) since t = 0", ONLY_ED, NULL},
+    {"cell_crossings", "1", "cell crossings (bookkeeping events) since t = 0", ONLY_ED, NULL},
+    {"steps", "1", "time steps since t = 0", ONLY_TD, NULL},
+    {"list_rebuilds", "1", "neighbour-list rebuilds since t = 0", ONLY_TD, NULL},
 };
+
+static int is_td(const wg_run *run) { return run->sc->engine == WG_ENGINE_TD; }
+static int column_used(const wg_run *run, int c)
+{
+  return !columns[c].only || columns[c].only == (is_td(run) ? ONLY_TD : ONLY_ED);
+}
 
 static double wall_clock(void)
 {
@@ -56,27 +76,73 @@ static double wall_clock(void)
 
 unsigned long long wg_run_events(const wg_run *run)
 {
+  if (is_td(run)) return run->td.contacts + run->td.ruptures + run->td.wall_contacts;
   const wg_counts *c = &run->ed.counts;
   return c->collisions + c->ruptures + c->reflections + c->wall_hits;
 }
 
+/* ---------- the engines seen by the observers ---------- */
+
+static double run_now(const wg_run *run) { return is_td(run) ? run->td.t : run->ed.now; }
+
+/* Storage index of particle id (the event-driven engine keeps particles in cell order). */
+static long slot_of(const wg_run *run, long id) { return is_td(run) ? id : run->ed.slot[id]; }
+
+/* Particle at storage index k now: position (wrapped into the periodic box), velocity, radius
+   and mass. */
+static void particle(const wg_run *run, long k, double *r, double *v, double *radius, double *mass)
+{
+  if (!is_td(run)) {
+    const wg_ed *s = &run->ed;
+    wg_ed_position_at(s, k, s->now, r, v);
+    *radius = s->p[k].radius;
+    *mass = wg_ed_mass(s, k);
+    return;
+  }
+  const wg_td *s = &run->td;
+  for (int a = 0; a < 3; a++) {
+    r[a] = s->r[3 * k + a];
+    v[a] = s->v[3 * k + a];
+    if (a < s->par.dim && s->par.periodic[a]) r[a] -= s->par.box[a] * floor(r[a] / s->par.box[a]);
+  }
+  *radius = s->radius[k];
+  *mass = s->mass ? s->mass[k] : 1.0;
+}
+
+/* Bridges per particle (storage order), NULL when dry. */
+static const uint8_t *bond_counts(wg_run *run)
+{
+  if (!is_td(run)) return run->ed.wet ? run->ed.nbond : NULL;
+  const wg_td *s = &run->td;
+  if (s->par.f_b <= 0 || !run->nbond) return NULL;
+  memset(run->nbond, 0, (size_t)s->n);
+  for (long k = 0; k < s->npair; k++)
+    if (s->pair[k].bonded) {
+      run->nbond[s->pair[k].i]++;
+      run->nbond[s->pair[k].j]++;
+    }
+  return run->nbond;
+}
+
 /* ---------- observers ---------- */
 
-static double temperature(const wg_ed *s)
+static double temperature(const wg_run *run)
 {
   double msum = 0, mv[3] = {0, 0, 0}, mv2 = 0;
-  for (long i = 0; i < s->n; i++) {
-    double r[3], v[3], m = wg_ed_mass(s, i);
-    wg_ed_position_at(s, i, s->now, r, v);
+  int dim = run->sc->dim;
+  long n = run->sc->n;
+  for (long i = 0; i < n; i++) {
+    double r[3], v[3], rad, m;
+    particle(run, i, r, v, &rad, &m);
     msum += m;
-    for (int k = 0; k < s->dim; k++) {
+    for (int k = 0; k < dim; k++) {
       mv[k] += m * v[k];
       mv2 += m * v[k] * v[k];
     }
   }
   double cm2 = 0;
-  for (int k = 0; k < s->dim; k++) cm2 += mv[k] * mv[k];
-  return (mv2 - cm2 / msum) / (double)(s->n * s->dim); /* Eq. 3.2 */
+  for (int k = 0; k < dim; k++) cm2 += mv[k] * mv[k];
+  return (mv2 - cm2 / msum) / (double)(n * dim); /* Eq. 3.2 */
 }
 
 static int sample_series(wg_run *run)
@@ -88,8 +154,32 @@ static int sample_series(wg_run *run)
     run->series = p;
     run->cap = cap;
   }
-  wg_ed *s = &run->ed;
   double *row = run->series + run->rows * NCOL;
+  memset(row, 0, sizeof *row * NCOL);
+  row[COL_TG] = temperature(run);
+  if (is_td(run)) {
+    const wg_td *s = &run->td;
+    double ek, ep;
+    wg_td_energy(s, &ek, &ep);
+    row[COL_TIME] = s->t;
+    row[COL_KINETIC] = ek;
+    row[COL_POTENTIAL] = ep;
+    row[COL_INJ_WALL] = wg_ksum_value(&s->injected_wall);
+    row[COL_DIS_COLL] = wg_ksum_value(&s->dissipated);
+    row[COL_DIS_WALL] = wg_ksum_value(&s->dissipated_wall);
+    row[COL_DIS_RUPT] = wg_ksum_value(&s->dissipated_rupt);
+    row[COL_RESIDUAL] = wg_td_ledger_residual(s);
+    row[COL_BRIDGES] = (double)wg_td_bond_total(s);
+    row[COL_COLLISIONS] = (double)s->contacts;
+    row[COL_CAPTURES] = (double)s->captures;
+    row[COL_RUPTURES] = (double)s->ruptures;
+    row[COL_WALL_HITS] = (double)s->wall_contacts;
+    row[COL_STEPS] = (double)s->steps;
+    row[COL_REBUILDS] = (double)s->rebuilds;
+    run->rows++;
+    return WG_OK;
+  }
+  wg_ed *s = &run->ed;
   double ek, ep;
   wg_ed_energy(s, &ek, &ep);
   row[COL_TIME] = s->now;
@@ -100,7 +190,6 @@ static int sample_series(wg_run *run)
   row[COL_DIS_WALL] = wg_ksum_value(&s->ledger.dissipated_wall);
   row[COL_DIS_RUPT] = wg_ksum_value(&s->ledger.dissipated_rupt);
   row[COL_RESIDUAL] = wg_ed_ledger_residual(s);
-  row[COL_TG] = temperature(s);
   row[COL_BRIDGES] = (double)wg_ed_bond_total(s);
   row[COL_COLLISIONS] = (double)s->counts.collisions;
   row[COL_CAPTURES] = (double)s->counts.captures;
@@ -139,24 +228,25 @@ static void profile_free(wg_profile *pr)
    a bridge counts half in the bin of each of its particles. */
 static void sample_profile(wg_run *run)
 {
-  wg_ed *s = &run->ed;
   wg_profile *pr = &run->prof;
-  double width = s->box[0] / pr->bins;
-  double unit_volume = s->dim == 2 ? M_PI : 4 * M_PI / 3; /* times radius^dim */
-  for (long i = 0; i < s->n; i++) {
-    double r[3], v[3], m = wg_ed_mass(s, i);
-    wg_ed_position_at(s, i, s->now, r, v);
+  int dim = run->sc->dim;
+  double width = run->sc->lx / pr->bins;
+  double unit_volume = dim == 2 ? M_PI : 4 * M_PI / 3; /* times radius^dim */
+  const uint8_t *nbond = bond_counts(run);
+  for (long i = 0; i < run->sc->n; i++) {
+    double r[3], v[3], radius, m;
+    particle(run, i, r, v, &radius, &m);
     int b = (int)(r[0] / width);
     if (b >= pr->bins) b = pr->bins - 1;
     if (b < 0) b = 0;
     pr->count[b] += 1;
-    pr->volume[b] += unit_volume * pow(s->p[i].radius, s->dim);
+    pr->volume[b] += unit_volume * pow(radius, dim);
     pr->mass[b] += m;
-    for (int k = 0; k < s->dim; k++) {
+    for (int k = 0; k < dim; k++) {
       pr->mom[3 * b + k] += m * v[k];
       pr->mv2[b] += m * v[k] * v[k];
     }
-    if (s->wet) pr->bridges[b] += 0.5 * s->nbond[i];
+    if (nbond) pr->bridges[b] += 0.5 * nbond[i];
   }
   pr->samples++;
 }
@@ -165,24 +255,31 @@ static void sample_profile(wg_run *run)
    bridge counts (n bytes), bridge pairs i < j (2 x int32 each). */
 static int write_frame(wg_run *run)
 {
-  wg_ed *s = &run->ed;
+  long n = run->sc->n;
+  int dim = run->sc->dim;
   long long nb = 0;
   size_t bytes = 0;
-  for (long id = 0; id < s->n; id++) {
-    double r[3], v[3];
-    wg_ed_position_of(s, id, s->now, r, v);
-    bytes += fwrite(r, sizeof(double), (size_t)s->dim, run->frames) * sizeof(double);
-  }
-  for (long id = 0; id < s->n; id++) {
-    double r[3], v[3];
-    wg_ed_position_of(s, id, s->now, r, v);
-    bytes += fwrite(v, sizeof(double), (size_t)s->dim, run->frames) * sizeof(double);
-  }
-  for (long id = 0; id < s->n; id++) {
-    uint8_t c = s->wet ? s->nbond[s->slot[id]] : 0;
+  for (int what = 0; what < 2; what++) /* positions, then velocities */
+    for (long id = 0; id < n; id++) {
+      double r[3], v[3], radius, m;
+      particle(run, slot_of(run, id), r, v, &radius, &m);
+      bytes += fwrite(what ? v : r, sizeof(double), (size_t)dim, run->frames) * sizeof(double);
+    }
+  const uint8_t *nbond = bond_counts(run);
+  for (long id = 0; id < n; id++) {
+    uint8_t c = nbond ? nbond[slot_of(run, id)] : 0;
     bytes += fwrite(&c, 1, 1, run->frames);
   }
-  if (s->wet)
+  if (nbond && is_td(run)) {
+    const wg_td *s = &run->td;
+    for (long k = 0; k < s->npair; k++)
+      if (s->pair[k].bonded) {
+        int32_t pair[2] = {s->pair[k].i, s->pair[k].j};
+        bytes += fwrite(pair, sizeof(int32_t), 2, run->frames) * sizeof(int32_t);
+        nb++;
+      }
+  } else if (nbond) {
+    const wg_ed *s = &run->ed;
     for (long id = 0; id < s->n; id++) {
       long i = s->slot[id];
       for (int k = 0; k < s->nbond[i]; k++) {
@@ -192,7 +289,8 @@ static int write_frame(wg_run *run)
         nb++;
       }
     }
-  size_t expect = (size_t)s->n * (2 * s->dim * sizeof(double) + 1) + (size_t)nb * 8;
+  }
+  size_t expect = (size_t)n * (2 * dim * sizeof(double) + 1) + (size_t)nb * 8;
   if (bytes != expect || fflush(run->frames) != 0)
     return wg_error(WG_EIO, run->frames_path, "cannot write snapshot %ld: %s", run->nframes,
                     strerror(errno));
@@ -201,7 +299,7 @@ static int write_frame(wg_run *run)
   if (ft) run->frame_time = ft;
   if (fb) run->frame_bonds = fb;
   if (!ft || !fb) return wg_error(WG_ENOMEM, "snapshots", "cannot grow the frame index");
-  run->frame_time[run->nframes] = s->now;
+  run->frame_time[run->nframes] = run_now(run);
   run->frame_bonds[run->nframes] = nb;
   run->nframes++;
   run->frames_bytes += (long long)expect;
@@ -212,21 +310,14 @@ static int write_frame(wg_run *run)
 
 static char *scene_fingerprint(const wg_scene *sc);
 
-/* Everything the engine and the observers need to continue, after wg_ed_synchronize(). */
-static int checkpoint_write(wg_run *run)
+/* The event-driven engine's state, after wg_ed_synchronize(). */
+static int ckpt_write_ed(wg_run *run, hid_t f)
 {
   wg_ed *s = &run->ed;
-  char tmp[4200];
-  snprintf(tmp, sizeof tmp, "%s.tmp", run->ckpt_path);
-  hid_t f = wg_h5_create(tmp);
-  if (f < 0) return WG_EIO;
   int st = WG_OK;
   long n = s->n;
   double *buf = malloc(sizeof(double) * (size_t)n * 3);
-  if (!buf) {
-    wg_h5_close(f);
-    return wg_error(WG_ENOMEM, "checkpoint", "no memory");
-  }
+  if (!buf) return wg_error(WG_ENOMEM, "checkpoint", "no memory");
   hsize_t d2[2] = {(hsize_t)n, 3}, d1[1] = {(hsize_t)n};
   for (long i = 0; i < n; i++) memcpy(buf + 3 * i, s->p[i].r, sizeof(double) * 3);
   st |= wg_h5_write(f, "state/r", H5T_NATIVE_DOUBLE, 2, d2, buf, "d", "positions at time now");
@@ -261,6 +352,74 @@ static int checkpoint_write(wg_run *run)
   unsigned long long ws[3] = {s->wall_stats.calls, s->wall_stats.pieces, s->wall_stats.evaluations};
   hsize_t d3[1] = {3};
   st |= wg_h5_write(f, "run/wall_stats", H5T_NATIVE_ULLONG, 1, d3, ws, "1", "wall solver work");
+  st |= wg_h5_attr_double(f, ".", "now", s->now);
+  return st;
+}
+
+/* The time-driven engine's counters and ledger scalars, in checkpoint order. */
+enum { TD_NCOUNT = 6, TD_NLEDGER = 15 };
+static unsigned long long *td_count(wg_td *s, int k)
+{
+  unsigned long long *c[TD_NCOUNT] = {&s->steps, &s->rebuilds, &s->captures, &s->ruptures,
+                                      &s->contacts, &s->wall_contacts};
+  return c[k];
+}
+static double *td_ledger(wg_td *s, int k)
+{
+  double *l[TD_NLEDGER] = {&s->injected_wall.s, &s->injected_wall.c, &s->dissipated.s,
+                           &s->dissipated.c, &s->dissipated_wall.s, &s->dissipated_wall.c,
+                           &s->dissipated_rupt.s, &s->dissipated_rupt.c, &s->e0, &s->u_contact,
+                           &s->u_bond, &s->p_wall, &s->p_diss, &s->p_diss_wall, &s->t0};
+  return l[k];
+}
+
+/* The time-driven engine's state between two steps, complete (forces, neighbour list with
+   its pair states, positions at the last build) so that a resumed run takes exactly the
+   steps the uninterrupted one takes. */
+static int ckpt_write_td(wg_run *run, hid_t f)
+{
+  const wg_td *s = &run->td;
+  int st = WG_OK;
+  long n = s->n, np = s->npair;
+  hsize_t d2[2] = {(hsize_t)n, 3}, d1[1] = {(hsize_t)n}, dp[2] = {(hsize_t)np, 2};
+  st |= wg_h5_write(f, "state/r", H5T_NATIVE_DOUBLE, 2, d2, s->r, "d", "positions");
+  st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, s->v, "sqrt(g d)", "velocities");
+  st |= wg_h5_write(f, "state/f", H5T_NATIVE_DOUBLE, 2, d2, s->f, "m g", "forces");
+  st |= wg_h5_write(f, "state/r_built", H5T_NATIVE_DOUBLE, 2, d2, s->r_built, "d", "positions at the last list build");
+  st |= wg_h5_write(f, "state/radius", H5T_NATIVE_DOUBLE, 1, d1, s->radius, "d", "radii");
+  if (s->mass) st |= wg_h5_write(f, "state/mass", H5T_NATIVE_DOUBLE, 1, d1, s->mass, "m", "masses");
+  st |= wg_h5_write(f, "state/wall_touch", H5T_NATIVE_UINT8, 1, d1, s->wall_touch, "1", "wall contacts (bit per wall)");
+  int32_t *ij = malloc(sizeof *ij * 2 * (size_t)(np ? np : 1));
+  uint8_t *flags = malloc(2 * (size_t)(np ? np : 1));
+  if (!ij || !flags) st = WG_ENOMEM;
+  for (long k = 0; st == WG_OK && k < np; k++) {
+    ij[2 * k] = s->pair[k].i;
+    ij[2 * k + 1] = s->pair[k].j;
+    flags[2 * k] = s->pair[k].bonded;
+    flags[2 * k + 1] = s->pair[k].touching;
+  }
+  if (st == WG_OK) {
+    st |= wg_h5_write(f, "state/pair", H5T_NATIVE_INT32, 2, dp, ij, "1", "neighbour list, in order");
+    st |= wg_h5_write(f, "state/pair_state", H5T_NATIVE_UINT8, 2, dp, flags, "1", "bonded, touching");
+  }
+  free(ij);
+  free(flags);
+  unsigned long long counts[TD_NCOUNT];
+  double ledger[TD_NLEDGER];
+  for (int k = 0; k < TD_NCOUNT; k++) counts[k] = *td_count((wg_td *)s, k);
+  for (int k = 0; k < TD_NLEDGER; k++) ledger[k] = *td_ledger((wg_td *)s, k);
+  hsize_t d6[1] = {TD_NCOUNT}, d15[1] = {TD_NLEDGER};
+  st |= wg_h5_write(f, "run/td_counts", H5T_NATIVE_ULLONG, 1, d6, counts, "1", "steps, rebuilds, captures, ruptures, contacts, wall contacts");
+  st |= wg_h5_write(f, "run/td_ledger", H5T_NATIVE_DOUBLE, 1, d15, ledger, "m g d", "ledger sums, energies and powers, t0");
+  st |= wg_h5_attr_double(f, ".", "now", s->t);
+  return st;
+}
+
+/* What the observers need to continue: time series, profile sums, the frame index and the
+   sampling counters. */
+static int ckpt_write_observers(wg_run *run, hid_t f)
+{
+  int st = WG_OK;
   hsize_t ds[2] = {run->rows, NCOL};
   st |= wg_h5_write(f, "run/series", H5T_NATIVE_DOUBLE, 2, ds, run->series, "-", "time series rows");
   int bins = run->prof.bins > 0 ? run->prof.bins : 1;
@@ -280,12 +439,22 @@ static int checkpoint_write(wg_run *run)
                     run->prof.samples, run->nframes, run->frames_bytes};
   hsize_t d7[1] = {7};
   st |= wg_h5_write(f, "run/counters", H5T_NATIVE_LLONG, 1, d7, k, "1", "sampling counters");
-  st |= wg_h5_attr_double(f, ".", "now", s->now);
   st |= wg_h5_attr_double(f, ".", "wall_s", wall_clock() - run->wall_start + run->wall_resumed);
-  st |= wg_h5_attr_llong(f, ".", "n", n);
+  st |= wg_h5_attr_llong(f, ".", "n", run->sc->n);
   char *fp = scene_fingerprint(run->sc);
   st |= fp ? wg_h5_attr_string(f, ".", "scene", fp) : WG_ENOMEM;
   free(fp);
+  return st;
+}
+
+static int checkpoint_write(wg_run *run)
+{
+  char tmp[4200];
+  snprintf(tmp, sizeof tmp, "%s.tmp", run->ckpt_path);
+  hid_t f = wg_h5_create(tmp);
+  if (f < 0) return WG_EIO;
+  int st = is_td(run) ? ckpt_write_td(run, f) : ckpt_write_ed(run, f);
+  if (st == WG_OK) st = ckpt_write_observers(run, f);
   wg_h5_close(f);
   if (st != WG_OK) return wg_error(WG_EIO, tmp, "checkpoint not written");
   if (rename(tmp, run->ckpt_path) != 0)
@@ -306,31 +475,14 @@ static int read_into(hid_t f, const char *ckpt, const char *path, hid_t type, vo
   return wg_h5_read(f, path, type, buf);
 }
 
-static int checkpoint_load(wg_run *run)
+static int ckpt_load_ed(wg_run *run, hid_t f, long n, double now)
 {
   const char *ck = run->ckpt_path;
-  hid_t f = wg_h5_open_read(ck);
-  if (f < 0) return WG_EIO;
   wg_ed *s = &run->ed;
-  long long n;
-  double now, wall_s;
-  int st = wg_h5_read_attr_llong(f, ".", "n", &n);
-  st |= wg_h5_read_attr_double(f, ".", "now", &now);
-  st |= wg_h5_read_attr_double(f, ".", "wall_s", &wall_s);
-  if (st != WG_OK || n != run->sc->n) {
-    wg_h5_close(f);
-    return wg_error(WG_EIO, ck, "checkpoint does not match the scene (n = %lld); rerun with --fresh", n);
-  }
-  st = wg_ed_alloc_empty(s, run->sc, (long)n);
-  if (st != WG_OK) {
-    wg_h5_close(f);
-    return st;
-  }
+  int st = wg_ed_alloc_empty(s, run->sc, n);
+  if (st != WG_OK) return st;
   double *buf = malloc(sizeof(double) * (size_t)n * 3);
-  if (!buf) {
-    wg_h5_close(f);
-    return wg_error(WG_ENOMEM, "checkpoint", "no memory");
-  }
+  if (!buf) return wg_error(WG_ENOMEM, "checkpoint", "no memory");
   st = read_into(f, ck, "state/r", H5T_NATIVE_DOUBLE, buf, (hsize_t)n * 3);
   for (long i = 0; st == WG_OK && i < n; i++) memcpy(s->p[i].r, buf + 3 * i, sizeof(double) * 3);
   if (st == WG_OK) st = read_into(f, ck, "state/v", H5T_NATIVE_DOUBLE, buf, (hsize_t)n * 3);
@@ -355,14 +507,94 @@ static int checkpoint_load(wg_run *run)
   }
   unsigned long long counts[10], ws[3];
   double ledger[10];
-  long long k[7];
   if (st == WG_OK) st = read_into(f, ck, "run/counts", H5T_NATIVE_ULLONG, counts, 10);
   if (st == WG_OK) st = read_into(f, ck, "run/ledger", H5T_NATIVE_DOUBLE, ledger, 10);
   if (st == WG_OK) st = read_into(f, ck, "run/wall_stats", H5T_NATIVE_ULLONG, ws, 3);
-  if (st == WG_OK) st = read_into(f, ck, "run/counters", H5T_NATIVE_LLONG, k, 7);
+  if (st != WG_OK) return st;
+  s->counts = (wg_counts){counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7], counts[8],
+               counts[9]};
+  s->wall_stats = (wg_wall_stats){ws[0], ws[1], ws[2]};
+  st = wg_ed_start(s, now);
+  if (st != WG_OK) return st;
+  s->ledger = (wg_ledger){{ledger[0], ledger[1]}, {ledger[2], ledger[3]}, {ledger[4], ledger[5]},
+                          {ledger[6], ledger[7]}, ledger[8], ledger[9]};
+  return WG_OK;
+}
+
+static int ckpt_load_td(wg_run *run, hid_t f, long n)
+{
+  const char *ck = run->ckpt_path;
+  wg_td *s = &run->td;
+  wg_td_params par;
+  wg_td_params_from_scene(run->sc, &par);
+  size_t n3 = 3 * (size_t)n;
+  double *r = malloc(sizeof *r * n3), *v = malloc(sizeof *v * n3), *rad = malloc(sizeof *rad * (size_t)n);
+  double *mass = run->sc->mass_scaling ? malloc(sizeof *mass * (size_t)n) : NULL;
+  int st = (!r || !v || !rad || (run->sc->mass_scaling && !mass)) ? WG_ENOMEM : WG_OK;
+  double ledger[TD_NLEDGER];
+  unsigned long long counts[TD_NCOUNT];
+  if (st == WG_OK) st = read_into(f, ck, "state/r", H5T_NATIVE_DOUBLE, r, n3);
+  if (st == WG_OK) st = read_into(f, ck, "state/v", H5T_NATIVE_DOUBLE, v, n3);
+  if (st == WG_OK) st = read_into(f, ck, "state/radius", H5T_NATIVE_DOUBLE, rad, (hsize_t)n);
+  if (st == WG_OK && mass) st = read_into(f, ck, "state/mass", H5T_NATIVE_DOUBLE, mass, (hsize_t)n);
+  if (st == WG_OK) st = read_into(f, ck, "run/td_ledger", H5T_NATIVE_DOUBLE, ledger, TD_NLEDGER);
+  if (st == WG_OK) st = read_into(f, ck, "run/td_counts", H5T_NATIVE_ULLONG, counts, TD_NCOUNT);
+  /* set up at t0, then overwrite everything the set-up recomputed */
+  if (st == WG_OK) st = wg_td_alloc_state(s, &par, n, r, v, rad, mass, ledger[14]);
+  free(v);
+  free(rad);
+  free(mass);
+  if (st == WG_OK) memcpy(s->r, r, sizeof *r * n3); /* the set-up wrapped them */
+  free(r);
+  if (st == WG_OK) st = read_into(f, ck, "state/f", H5T_NATIVE_DOUBLE, s->f, n3);
+  if (st == WG_OK) st = read_into(f, ck, "state/r_built", H5T_NATIVE_DOUBLE, s->r_built, n3);
+  if (st == WG_OK) st = read_into(f, ck, "state/wall_touch", H5T_NATIVE_UINT8, s->wall_touch, (hsize_t)n);
+  int rank;
+  hsize_t dims[8] = {0};
+  if (st == WG_OK) st = wg_h5_dims(f, "state/pair", &rank, dims);
+  long np = (long)dims[0];
+  int32_t *ij = NULL;
+  uint8_t *flags = NULL;
+  if (st == WG_OK) {
+    ij = malloc(sizeof *ij * 2 * (size_t)(np ? np : 1));
+    flags = malloc(2 * (size_t)(np ? np : 1));
+    if (np > s->pair_cap) {
+      wg_td_pair *p = realloc(s->pair, sizeof *p * (size_t)np);
+      if (p) {
+        s->pair = p;
+        s->pair_cap = np;
+      } else {
+        st = WG_ENOMEM;
+      }
+    }
+    if (!ij || !flags) st = WG_ENOMEM;
+  }
+  if (st == WG_OK && np) st = read_into(f, ck, "state/pair", H5T_NATIVE_INT32, ij, 2 * (hsize_t)np);
+  if (st == WG_OK && np) st = read_into(f, ck, "state/pair_state", H5T_NATIVE_UINT8, flags, 2 * (hsize_t)np);
+  for (long k = 0; st == WG_OK && k < np; k++) {
+    if (ij[2 * k] < 0 || ij[2 * k] >= n || ij[2 * k + 1] < 0 || ij[2 * k + 1] >= n) st = WG_EIO;
+    s->pair[k] = (wg_td_pair){.i = ij[2 * k], .j = ij[2 * k + 1], .bonded = flags[2 * k],
+                              .touching = flags[2 * k + 1]};
+  }
+  free(ij);
+  free(flags);
+  if (st != WG_OK) return st;
+  s->npair = np;
+  for (int k = 0; k < TD_NCOUNT; k++) *td_count(s, k) = counts[k];
+  for (int k = 0; k < TD_NLEDGER; k++) *td_ledger(s, k) = ledger[k];
+  s->t = s->t0 + (double)s->steps * s->par.dt;
+  return WG_OK;
+}
+
+static int ckpt_load_observers(wg_run *run, hid_t f)
+{
+  const char *ck = run->ckpt_path;
+  long long k[7];
+  int st = read_into(f, ck, "run/counters", H5T_NATIVE_LLONG, k, 7);
   int rank;
   hsize_t dims[8] = {0};
   if (st == WG_OK) st = wg_h5_dims(f, "run/series", &rank, dims);
+  if (st == WG_OK && (rank != 2 || dims[1] != NCOL)) st = WG_EIO;
   if (st == WG_OK) {
     run->rows = run->cap = dims[0];
     run->series = malloc(sizeof(double) * (dims[0] ? dims[0] : 1) * NCOL);
@@ -383,12 +615,7 @@ static int checkpoint_load(wg_run *run)
     if (st == WG_OK) st = read_into(f, ck, "run/frame_time", H5T_NATIVE_DOUBLE, run->frame_time, (hsize_t)k[5]);
     if (st == WG_OK) st = read_into(f, ck, "run/frame_bonds", H5T_NATIVE_LLONG, run->frame_bonds, (hsize_t)k[5]);
   }
-  wg_h5_close(f);
-  if (st != WG_OK) return wg_error(WG_EIO, ck, "cannot read the checkpoint; rerun with --fresh");
-
-  s->counts = (wg_counts){counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7], counts[8],
-               counts[9]};
-  s->wall_stats = (wg_wall_stats){ws[0], ws[1], ws[2]};
+  if (st != WG_OK) return st;
   run->k_series = k[0];
   run->k_snapshot = k[1];
   run->k_profile = k[2];
@@ -396,11 +623,28 @@ static int checkpoint_load(wg_run *run)
   run->prof.samples = (long)k[4];
   run->nframes = (long)k[5];
   run->frames_bytes = k[6];
+  return WG_OK;
+}
+
+static int checkpoint_load(wg_run *run)
+{
+  const char *ck = run->ckpt_path;
+  hid_t f = wg_h5_open_read(ck);
+  if (f < 0) return WG_EIO;
+  long long n;
+  double now, wall_s;
+  int st = wg_h5_read_attr_llong(f, ".", "n", &n);
+  st |= wg_h5_read_attr_double(f, ".", "now", &now);
+  st |= wg_h5_read_attr_double(f, ".", "wall_s", &wall_s);
+  if (st != WG_OK || n != run->sc->n) {
+    wg_h5_close(f);
+    return wg_error(WG_EIO, ck, "checkpoint does not match the scene (n = %lld); rerun with --fresh", n);
+  }
+  st = is_td(run) ? ckpt_load_td(run, f, (long)n) : ckpt_load_ed(run, f, (long)n, now);
+  if (st == WG_OK) st = ckpt_load_observers(run, f);
+  wg_h5_close(f);
+  if (st != WG_OK) return wg_error(WG_EIO, ck, "cannot read the checkpoint; rerun with --fresh");
   run->wall_resumed = wall_s;
-  st = wg_ed_start(s, now);
-  if (st != WG_OK) return st;
-  s->ledger = (wg_ledger){{ledger[0], ledger[1]}, {ledger[2], ledger[3]}, {ledger[4], ledger[5]},
-                          {ledger[6], ledger[7]}, ledger[8], ledger[9]};
   /* the snapshot scratch file continues exactly after the checkpoint's last frame */
   if (truncate(run->frames_path, (off_t)run->frames_bytes) != 0)
     return wg_error(WG_EIO, run->frames_path, "cannot resume the snapshot file: %s", strerror(errno));
@@ -516,11 +760,14 @@ static int write_series(wg_run *run, hid_t f)
   }
   for (size_t r = 0; r < run->rows; r++) step[r] = (long long)r;
   for (int c = 1; c < NCOL && st == WG_OK; c++) {
+    if (!column_used(run, c)) continue;
     char path[160];
     hsize_t dims[1] = {run->rows};
+    const char *desc = is_td(run) && columns[c].td_description ? columns[c].td_description
+                                                                : columns[c].description;
     for (size_t r = 0; r < run->rows; r++) col[r] = run->series[r * NCOL + c];
     snprintf(path, sizeof path, "/observables/%s/value", columns[c].name);
-    st |= wg_h5_write(f, path, H5T_NATIVE_DOUBLE, 1, dims, col, columns[c].unit, columns[c].description);
+    st |= wg_h5_write(f, path, H5T_NATIVE_DOUBLE, 1, dims, col, columns[c].unit, desc);
     for (size_t r = 0; r < run->rows; r++) col[r] = run->series[r * NCOL + COL_TIME];
     snprintf(path, sizeof path, "/observables/%s/time", columns[c].name);
     st |= wg_h5_write(f, path, H5T_NATIVE_DOUBLE, 1, dims, col, columns[COL_TIME].unit, columns[COL_TIME].description);
@@ -535,12 +782,13 @@ static int write_series(wg_run *run, hid_t f)
 static int write_profiles(wg_run *run, hid_t f)
 {
   const wg_profile *pr = &run->prof;
-  const wg_ed *s = &run->ed;
+  const wg_scene *sc = run->sc;
+  int dim = sc->dim;
   if (pr->bins <= 0) return WG_OK;
   int b = pr->bins;
-  double width = s->box[0] / b;
-  double cross = s->dim == 3 ? s->box[1] : 1; /* lateral extent across x */
-  double height = s->box[s->up];
+  double width = sc->lx / b;
+  double cross = dim == 3 ? sc->ly : 1; /* lateral extent across x */
+  double height = sc->height;
   double *x = malloc(sizeof(double) * 5 * (size_t)b);
   if (!x) return wg_error(WG_ENOMEM, "run file", "no memory for profiles");
   double *nd = x + b, *pf = x + 2 * b, *tg = x + 3 * b, *ncb = x + 4 * b;
@@ -550,8 +798,8 @@ static int write_profiles(wg_run *run, hid_t f)
     nd[k] = pr->count[k] / (samples * width * cross);
     pf[k] = pr->volume[k] / (samples * width * cross * height);
     double p2 = 0;
-    for (int a = 0; a < s->dim; a++) p2 += pr->mom[3 * k + a] * pr->mom[3 * k + a];
-    tg[k] = pr->count[k] > 0 ? (pr->mv2[k] - p2 / pr->mass[k]) / (pr->count[k] * s->dim) : NAN;
+    for (int a = 0; a < dim; a++) p2 += pr->mom[3 * k + a] * pr->mom[3 * k + a];
+    tg[k] = pr->count[k] > 0 ? (pr->mv2[k] - p2 / pr->mass[k]) / (pr->count[k] * dim) : NAN;
     ncb[k] = pr->bridges[k] / (samples * width * cross);
   }
   hsize_t dims[1] = {(hsize_t)b};
@@ -575,9 +823,8 @@ static int write_profiles(wg_run *run, hid_t f)
 /* Copy the snapshot frames from the scratch file into H5MD elements. */
 static int write_frames(wg_run *run, hid_t f)
 {
-  const wg_ed *s = &run->ed;
-  long n = s->n;
-  int dim = s->dim, st = WG_OK;
+  long n = run->sc->n;
+  int dim = run->sc->dim, st = WG_OK;
   if (fflush(run->frames) != 0) return wg_error(WG_EIO, run->frames_path, "cannot flush");
   FILE *in = fopen(run->frames_path, "rb");
   if (!in) return wg_error(WG_EIO, run->frames_path, "cannot reopen: %s", strerror(errno));
@@ -642,46 +889,65 @@ static int write_frames(wg_run *run, hid_t f)
   return WG_OK;
 }
 
+static int write_summary(wg_run *run, hid_t f)
+{
+  hid_t g = wg_h5_group(f, "/summary");
+  if (g < 0) return WG_EIO;
+  int st = WG_OK;
+  double residual = run->rows ? run->series[(run->rows - 1) * NCOL + COL_RESIDUAL] : 0;
+  st |= wg_h5_attr_llong(g, ".", "events", (long long)wg_run_events(run));
+  st |= wg_h5_attr_double(g, ".", "sim_time", run_now(run));
+  st |= wg_h5_attr_double(g, ".", "ledger_residual", residual);
+  if (is_td(run)) {
+    const wg_td *s = &run->td;
+    st |= wg_h5_attr_llong(g, ".", "steps", (long long)s->steps);
+    st |= wg_h5_attr_llong(g, ".", "contacts", (long long)s->contacts);
+    st |= wg_h5_attr_llong(g, ".", "wall_contacts", (long long)s->wall_contacts);
+    st |= wg_h5_attr_llong(g, ".", "list_rebuilds", (long long)s->rebuilds);
+  } else {
+    const wg_ed *s = &run->ed;
+    st |= wg_h5_attr_llong(g, ".", "collisions", (long long)s->counts.collisions);
+    st |= wg_h5_attr_llong(g, ".", "cell_crossings", (long long)s->counts.cell_crossings);
+    st |= wg_h5_attr_llong(g, ".", "wall_enters", (long long)s->counts.wall_enters);
+    st |= wg_h5_attr_llong(g, ".", "stale_predictions", (long long)s->counts.stale);
+    st |= wg_h5_attr_llong(g, ".", "rigid_collisions", (long long)s->counts.rigid);
+    st |= wg_h5_attr_llong(g, ".", "grazing_reflections", (long long)s->counts.grazing);
+  }
+  H5Gclose(g);
+  return st;
+}
+
 static int write_run_file(wg_run *run, double wall_s)
 {
-  wg_ed *s = &run->ed;
+  const wg_scene *sc = run->sc;
+  long n = sc->n;
+  int dim = sc->dim;
   hid_t f = wg_h5_create(run->tmp_path);
   if (f < 0) return WG_EIO;
   int st = WG_OK;
   st |= wg_h5md_header(f, "wetgran", "wetgran-run", wg_version());
   const char *bound[3] = {"periodic", "periodic", "periodic"};
-  if (s->nwalls) bound[s->up] = "none";
-  st |= wg_h5md_box(f, "all", s->dim, s->box, bound);
-  double *buf = malloc(sizeof(double) * (size_t)s->n);
-  if (!buf) st = WG_ENOMEM;
-  hsize_t d1[1] = {(hsize_t)s->n};
-  for (long id = 0; st == WG_OK && id < s->n; id++) buf[id] = 2 * s->p[s->slot[id]].radius;
-  if (st == WG_OK) st = wg_h5_write(f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, 1, d1, buf, "d", "particle diameters");
-  for (long id = 0; st == WG_OK && id < s->n; id++) buf[id] = wg_ed_mass(s, s->slot[id]);
+  if (sc->container == WG_CONTAINER_SHAKER) bound[dim - 1] = "none";
+  double edges[3] = {sc->lx, dim == 3 ? sc->ly : sc->height, sc->height};
+  st |= wg_h5md_box(f, "all", dim, edges, bound);
+  double *buf = malloc(sizeof(double) * (size_t)n), *dia = malloc(sizeof(double) * (size_t)n);
+  if (!buf || !dia) st = WG_ENOMEM;
+  hsize_t d1[1] = {(hsize_t)n};
+  for (long id = 0; st == WG_OK && id < n; id++) {
+    double r[3], v[3], radius;
+    particle(run, slot_of(run, id), r, v, &radius, buf + id);
+    dia[id] = 2 * radius;
+  }
+  if (st == WG_OK) st = wg_h5_write(f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, 1, d1, dia, "d", "particle diameters");
   if (st == WG_OK) st = wg_h5_write(f, "/particles/all/mass", H5T_NATIVE_DOUBLE, 1, d1, buf, "m", "particle masses");
   free(buf);
+  free(dia);
   if (st == WG_OK) st = write_frames(run, f);
   if (st == WG_OK) st = write_series(run, f);
   if (st == WG_OK) st = write_profiles(run, f);
   if (st == WG_OK) st = write_parameters(run, f);
   if (st == WG_OK) st = write_provenance(run, f, wall_s);
-  if (st == WG_OK) {
-    hid_t g = wg_h5_group(f, "/summary");
-    if (g < 0) st = WG_EIO;
-    else {
-      double residual = run->rows ? run->series[(run->rows - 1) * NCOL + COL_RESIDUAL] : 0;
-      st |= wg_h5_attr_llong(g, ".", "events", (long long)wg_run_events(run));
-      st |= wg_h5_attr_double(g, ".", "sim_time", s->now);
-      st |= wg_h5_attr_double(g, ".", "ledger_residual", residual);
-      st |= wg_h5_attr_llong(g, ".", "collisions", (long long)s->counts.collisions);
-      st |= wg_h5_attr_llong(g, ".", "cell_crossings", (long long)s->counts.cell_crossings);
-      st |= wg_h5_attr_llong(g, ".", "wall_enters", (long long)s->counts.wall_enters);
-      st |= wg_h5_attr_llong(g, ".", "stale_predictions", (long long)s->counts.stale);
-      st |= wg_h5_attr_llong(g, ".", "rigid_collisions", (long long)s->counts.rigid);
-      st |= wg_h5_attr_llong(g, ".", "grazing_reflections", (long long)s->counts.grazing);
-      H5Gclose(g);
-    }
-  }
+  if (st == WG_OK) st = write_summary(run, f);
   if (wg_h5_close(f) != WG_OK) st = WG_EIO;
   if (st != WG_OK) return wg_error(WG_EIO, run->tmp_path, "run file not completed; nothing renamed");
   if (rename(run->tmp_path, run->opt.out_path) != 0)
@@ -696,13 +962,13 @@ int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt)
   memset(run, 0, sizeof *run);
   run->sc = sc;
   run->opt = *opt;
-  if (sc->engine != WG_ENGINE_ED)
-    return wg_error(WG_EINVAL, sc->source, "key 'engine': only 'ed' is available in this version");
   snprintf(run->tmp_path, sizeof run->tmp_path, "%s.tmp", opt->out_path);
   snprintf(run->ckpt_path, sizeof run->ckpt_path, "%s.ckpt", opt->out_path);
   snprintf(run->frames_path, sizeof run->frames_path, "%s.frames", opt->out_path);
   int st = profile_alloc(&run->prof, sc->profile_bins);
   if (st != WG_OK) return st;
+  if (is_td(run) && sc->s_crit > 0 && !(run->nbond = malloc((size_t)sc->n)))
+    return wg_error(WG_ENOMEM, "run", "no memory for %ld bridge counts", sc->n);
   run->wall_start = wall_clock();
   if (!opt->fresh && access(run->ckpt_path, R_OK) == 0) {
     char *want = scene_fingerprint(sc), have[1 << 15] = "";
@@ -719,10 +985,10 @@ int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt)
     st = checkpoint_load(run);
     if (st != WG_OK) return st;
     run->resumed = 1;
-    if (opt->progress) fprintf(stderr, "resuming from %s at t = %g\n", run->ckpt_path, run->ed.now);
+    if (opt->progress) fprintf(stderr, "resuming from %s at t = %g\n", run->ckpt_path, run_now(run));
     return WG_OK;
   }
-  st = wg_ed_alloc(&run->ed, sc);
+  st = is_td(run) ? wg_td_alloc(&run->td, sc) : wg_ed_alloc(&run->ed, sc);
   if (st != WG_OK) return st;
   run->frames = fopen(run->frames_path, "wb");
   if (!run->frames) return wg_error(WG_EIO, run->frames_path, "cannot create: %s", strerror(errno));
@@ -756,23 +1022,57 @@ static void progress(wg_run *run, double *last)
   double now = wall_clock();
   if (!run->opt.progress || now - *last < 1.0) return;
   *last = now;
-  double el = now - run->wall_start;
-  fprintf(stderr, "\rt = %.6g / %g (%3.0f%%)  events %llu  %.3g events/s   ", run->ed.now,
-          run->sc->t_end, 100 * run->ed.now / run->sc->t_end, wg_run_events(run),
-          el > 0 ? (double)wg_run_events(run) / el : 0);
+  double el = now - run->wall_start, t = run_now(run);
+  if (is_td(run))
+    fprintf(stderr, "\rt = %.6g / %g (%3.0f%%)  steps %llu  %.3g particle-steps/s   ", t,
+            run->sc->t_end, 100 * t / run->sc->t_end, run->td.steps,
+            el > 0 ? (double)run->td.steps * (double)run->td.n / el : 0);
+  else
+    fprintf(stderr, "\rt = %.6g / %g (%3.0f%%)  events %llu  %.3g events/s   ", t,
+            run->sc->t_end, 100 * t / run->sc->t_end, wg_run_events(run),
+            el > 0 ? (double)wg_run_events(run) / el : 0);
+}
+
+static void print_summary(wg_run *run, double wall_s)
+{
+  double residual = run->rows ? run->series[(run->rows - 1) * NCOL + COL_RESIDUAL] : 0;
+  unsigned long long ev = wg_run_events(run);
+  struct rusage ru;
+  getrusage(RUSAGE_SELF, &ru);
+  if (is_td(run)) {
+    const wg_td *s = &run->td;
+    double ps = (double)s->steps * (double)s->n;
+    fprintf(stderr,
+            "summary: engine=td steps=%llu events=%llu sim_time=%.10g wall_s=%.3f"
+            " particle_steps_per_s=%.4g events_per_s=%.4g ledger_residual=%.3g contacts=%llu"
+            " wall_contacts=%llu ruptures=%llu list_rebuilds=%llu peak_rss_kb=%ld"
+            " engine_bytes_per_particle=%.0f\n",
+            s->steps, ev, s->t, wall_s, wall_s > 0 ? ps / wall_s : 0,
+            wall_s > 0 ? (double)ev / wall_s : 0, residual, s->contacts, s->wall_contacts,
+            s->ruptures, s->rebuilds, ru.ru_maxrss, wg_td_bytes_per_particle(s));
+    return;
+  }
+  const wg_ed *s = &run->ed;
+  fprintf(stderr,
+          "summary: events=%llu sim_time=%.10g wall_s=%.3f events_per_s=%.4g ledger_residual=%.3g"
+          " cell_crossings=%llu wall_enters=%llu rigid_collisions=%llu grazing_reflections=%llu"
+          " peak_rss_kb=%ld"
+          " engine_bytes_per_particle=%.0f\n",
+          ev, s->now, wall_s, wall_s > 0 ? (double)ev / wall_s : 0, residual,
+          s->counts.cell_crossings, s->counts.wall_enters, s->counts.rigid, s->counts.grazing, ru.ru_maxrss,
+          (double)wg_ed_bytes(s) / (double)s->n);
 }
 
 int wg_run_execute(wg_run *run)
 {
   wg_scene *sc = run->sc;
-  wg_ed *s = &run->ed;
   double last = wall_clock();
   if (run->k_checkpoint == 0) run->k_checkpoint = 1;
   int st = WG_OK;
   for (;;) {
     int what;
     double t = next_time(run, &what);
-    st = wg_ed_advance(s, t);
+    st = is_td(run) ? wg_td_advance(&run->td, t) : wg_ed_advance(&run->ed, t);
     if (st != WG_OK) break;
     int final = t >= sc->t_end;
     if (run->k_series * sc->dt_series <= t || final) {
@@ -785,7 +1085,7 @@ int wg_run_execute(wg_run *run)
       run->k_profile++;
     }
     if (st == WG_OK && ((sc->dt_snapshot > 0 && run->k_snapshot * sc->dt_snapshot <= t) || final)) {
-      if (!(final && run->nframes > 0 && run->frame_time[run->nframes - 1] == t))
+      if (!(final && run->nframes > 0 && run->frame_time[run->nframes - 1] == run_now(run)))
         st = write_frame(run);
       if (sc->dt_snapshot > 0)
         while (run->k_snapshot * sc->dt_snapshot <= t) run->k_snapshot++;
@@ -793,12 +1093,12 @@ int wg_run_execute(wg_run *run)
     if (st != WG_OK || final) break;
     if (sc->dt_checkpoint > 0 && run->k_checkpoint * sc->dt_checkpoint <= t) {
       while (run->k_checkpoint * sc->dt_checkpoint <= t) run->k_checkpoint++;
-      st = wg_ed_synchronize(s);
+      if (!is_td(run)) st = wg_ed_synchronize(&run->ed);
       if (st == WG_OK) st = checkpoint_write(run);
       if (st != WG_OK) break;
       if (run->opt.abort_after_checkpoint > 0 &&
           run->k_checkpoint - 1 >= run->opt.abort_after_checkpoint) {
-        fprintf(stderr, "wetgran-run: stopping after checkpoint at t = %g as asked\n", s->now);
+        fprintf(stderr, "wetgran-run: stopping after checkpoint at t = %g as asked\n", run_now(run));
         return WG_ESTOPPED;
       }
     }
@@ -813,25 +1113,16 @@ int wg_run_execute(wg_run *run)
   run->frames = NULL;
   remove(run->frames_path);
   remove(run->ckpt_path);
-  double residual = run->rows ? run->series[(run->rows - 1) * NCOL + COL_RESIDUAL] : 0;
-  unsigned long long ev = wg_run_events(run);
-  struct rusage ru;
-  getrusage(RUSAGE_SELF, &ru);
-  fprintf(stderr,
-          "summary: events=%llu sim_time=%.10g wall_s=%.3f events_per_s=%.4g ledger_residual=%.3g"
-          " cell_crossings=%llu wall_enters=%llu rigid_collisions=%llu grazing_reflections=%llu"
-          " peak_rss_kb=%ld"
-          " engine_bytes_per_particle=%.0f\n",
-          ev, s->now, wall_s, wall_s > 0 ? (double)ev / wall_s : 0, residual,
-          s->counts.cell_crossings, s->counts.wall_enters, s->counts.rigid, s->counts.grazing, ru.ru_maxrss,
-          (double)wg_ed_bytes(s) / (double)s->n);
+  print_summary(run, wall_s);
   return WG_OK;
 }
 
 void wg_run_free(wg_run *run)
 {
   if (run->frames) fclose(run->frames);
-  wg_ed_free(&run->ed);
+  if (is_td(run)) wg_td_free(&run->td);
+  else wg_ed_free(&run->ed);
+  free(run->nbond);
   free(run->series);
   free(run->frame_time);
   free(run->frame_bonds);

@@ -1,4 +1,4 @@
-/* A run: the engine plus what a run file records — time series of observables and of the
+/* A run: an engine (event-driven or time-driven, chosen by the scene) plus what a run file records — time series of observables and of the
    energy ledger, time-averaged lateral profiles, particle snapshots — with checkpoints from
    which an interrupted run resumes bit-identically, and the final H5MD file, written under a
    temporary name and renamed when complete. */
@@ -7,6 +7,7 @@
 
 #include <stdio.h>
 #include "ed.h"
+#include "td.h"
 
 typedef struct wg_run_options {
   const char *out_path;      /* RUN.h5 */
@@ -28,7 +29,9 @@ typedef struct wg_profile {
 typedef struct wg_run {
   wg_scene *sc;
   wg_run_options opt;
-  wg_ed ed;
+  wg_ed ed;                  /* engine = ed */
+  wg_td td;                  /* engine = td */
+  uint8_t *nbond;            /* td: bridges per particle, counted from the pairs when needed */
   /* time series: one row per sample, columns as in the table in run.c */
   size_t rows, cap;
   double *series;
@@ -50,7 +53,8 @@ int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt);
 int wg_run_execute(wg_run *run);
 void wg_run_free(wg_run *run);
 
-/* Physical events so far: collisions, bridge ruptures and reflections, wall hits. */
+/* Physical events so far: collisions (td: contacts begun), bridge ruptures and reflections,
+   wall hits (td: wall contacts begun). */
 unsigned long long wg_run_events(const wg_run *run);
 
 #endif

@@ -43,6 +43,7 @@ typedef enum { DEF_VALUE, DEF_REQUIRED, DEF_COND } def_kind;
 enum { MIN_EXCL = 1, MAX_EXCL = 2 };
 /* Groups of mutually exclusive alternatives: keys of one group with different alt conflict. */
 enum { G_NONE, G_BRIDGE, G_ESTAR, G_TG, G_BOX };
+enum { ONLY_ED = 1, ONLY_TD = 2 };
 
 typedef struct {
   const char *name;
@@ -57,18 +58,23 @@ typedef struct {
   const char *desc;
   const char *const *words;  /* T_ENUM: NULL-terminated */
   int group, alt;
+  int only;                  /* ONLY_ED / ONLY_TD: a key of one engine (0: both) */
 } key_desc;
 
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
-  K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT, NKEYS
+  K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT,
+  K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
+  K_BRIDGE_VOLUME, K_CONTACT_ANGLE, NKEYS
 };
 
 static const char *const engine_words[] = {"ed", "td", NULL};
 static const char *const container_words[] = {"shaker", "periodic", NULL};
 static const char *const mass_words[] = {"unit", "volume", NULL};
+static const char *const contact_words[] = {"linear", "hertz", NULL};
+static const char *const bridge_law_words[] = {"constant", "willett", NULL};
 
 #define OFF(field) offsetof(wg_scene, field)
 #define INF INFINITY
@@ -123,10 +129,12 @@ static const key_desc keys[NKEYS] = {
   [K_EPS_WALL] = {"eps_wall", T_DOUBLE, OFF(eps_wall), 0, 1, MIN_EXCL, DEF_VALUE, 1, NULL,
                   "1", "coefficient of restitution at the walls", NULL, 0, 0},
   [K_TC] = {"tc", T_DOUBLE, OFF(tc), 0, INF, MAX_EXCL, DEF_VALUE, 1e-5, NULL, "sqrt(d/g)",
-            "TC model: a collision within tc of the previous one is elastic", NULL, 0, 0},
+            "TC model: a collision within tc of the previous one is elastic", NULL, 0, 0,
+            ONLY_ED},
   [K_GRAZING] = {"grazing_angle", T_DOUBLE, OFF(grazing_angle), 0, 1, MAX_EXCL, DEF_VALUE, 0.05,
                  NULL, "rad", "a bonded pair reaching gap s_crit at a smaller angle leaves at "
-                 "this one (a spinning taut bridge would bounce endlessly)", NULL, 0, 0},
+                 "this one (a spinning taut bridge would bounce endlessly)", NULL, 0, 0,
+                 ONLY_ED},
   [K_GAMMA] = {"gamma", T_DOUBLE, OFF(gamma), 0, INF, MIN_EXCL | MAX_EXCL, DEF_COND, 0,
                "required (shaker)", "1", "reduced acceleration Gamma = A w^2 / g (Eq. 2.19)",
                NULL, 0, 0},
@@ -165,6 +173,34 @@ static const key_desc keys[NKEYS] = {
   [K_DT_CHECKPOINT] = {"dt_checkpoint", T_DOUBLE, OFF(dt_checkpoint), 0, INF, MAX_EXCL,
                        DEF_COND, 0, "t_end/10", "sqrt(d/g)",
                        "checkpoint interval; 0 = no checkpoints", NULL, 0, 0},
+  /* time-driven engine (engine = td) */
+  [K_CONTACT] = {"contact", T_ENUM, OFF(contact_law), 0, 1, 0, DEF_VALUE, 0, NULL, "",
+                 "normal contact law: linear spring-dashpot (restitution eps) or Hertz "
+                 "(Eq. 2.7)", contact_words, 0, 0, ONLY_TD},
+  [K_T_CONTACT] = {"t_contact", T_DOUBLE, OFF(t_contact), 0, INF, MIN_EXCL | MAX_EXCL,
+                   DEF_VALUE, 0.005, NULL, "sqrt(d/g)",
+                   "contact time of two unit masses: sets the stiffness (Hertz: at impact "
+                   "speed 1 sqrt(g d))", NULL, 0, 0, ONLY_TD},
+  [K_STEPS_PER_CONTACT] = {"steps_per_contact", T_DOUBLE, OFF(steps_per_contact), 4, INF,
+                           MAX_EXCL, DEF_VALUE, 50, NULL, "1",
+                           "time step dt = t_contact / steps_per_contact (bench_td)", NULL, 0,
+                           0, ONLY_TD},
+  [K_HERTZ_AD] = {"hertz_ad", T_DOUBLE, OFF(hertz_ad), 0, INF, MAX_EXCL, DEF_COND, 0,
+                  "0 if eps = 1", "sqrt(d/g)",
+                  "dissipative constant A_d of the Hertz law (Eq. 2.7)", NULL, 0, 0, ONLY_TD},
+  [K_SKIN] = {"skin", T_DOUBLE, OFF(skin), 0, 10, MIN_EXCL, DEF_VALUE, 0.1, NULL, "d",
+              "neighbour-list skin", NULL, 0, 0, ONLY_TD},
+  [K_BRIDGE_LAW] = {"bridge_law", T_ENUM, OFF(bridge_law), 0, 1, 0, DEF_VALUE, 0, NULL, "",
+                    "bridge force of the minimal capillary model: constant F_B, or Willett's "
+                    "F_B / (1 + 1.05 s^ + 2.5 s^2) (Eq. 2.9)", bridge_law_words, 0, 0,
+                    ONLY_TD},
+  [K_BRIDGE_VOLUME] = {"bridge_volume", T_DOUBLE, OFF(bridge_volume), 0, 1, MIN_EXCL | MAX_EXCL,
+                       DEF_COND, 0, "willett: required", "d^3",
+                       "liquid volume V of a bridge: s^ = s sqrt(R/V), s_crit from Eq. 2.10 "
+                       "(R = d/2)", NULL, 0, 0, ONLY_TD},
+  [K_CONTACT_ANGLE] = {"contact_angle", T_DOUBLE, OFF(contact_angle), 0, 1.5707963267948966,
+                       MAX_EXCL, DEF_VALUE, 0, NULL, "rad",
+                       "contact angle theta_c of the liquid in Eq. 2.10", NULL, 0, 0, ONLY_TD},
 };
 
 _Static_assert(NKEYS <= sizeof(((wg_scene *)0)->key_line) / sizeof(int),
@@ -695,6 +731,58 @@ static int resolve_gravity(wg_scene *sc)
   return WG_OK;
 }
 
+/* Keys of the other engine are refused; the time-driven engine's derived values:
+   the Willett rupture distance (Eq. 2.10, before resolve_bridge), the time step and Hertz's K. */
+static int resolve_engine(wg_scene *sc)
+{
+  int td = sc->engine == WG_ENGINE_TD;
+  for (int k = 0; k < NKEYS; k++)
+    if (keys[k].only && given(sc, k) && keys[k].only != (td ? ONLY_TD : ONLY_ED))
+      return pair_error(sc, k, K_ENGINE, "applies only to engine = %s", td ? "ed" : "td");
+  if (!td) return WG_OK;
+  sc->dt = sc->t_contact / sc->steps_per_contact;
+  sc->hertz_k = 0;
+  if (sc->contact_law == 1) { /* Hertz */
+    if (given(sc, K_EPS) || given(sc, K_EPS_WALL))
+      return pair_error(sc, given(sc, K_EPS) ? K_EPS : K_EPS_WALL, K_CONTACT,
+                        "the Hertz law dissipates through hertz_ad (Eq. 2.7), not a fixed "
+                        "restitution");
+    /* elastic Hertz collision F = k xi^3/2 of two unit masses (m_eff = 1/2) at speed v = 1:
+       xi_max = (5 m_eff v^2 / 4k)^2/5 and t_c = c xi_max / v, c = 2 int_0^1 du/sqrt(1-u^5/2)
+       = (4/5) B(2/5, 1/2) */
+    double c = 0.8 * tgamma(0.4) * tgamma(0.5) / tgamma(0.9), m_eff = 0.5, r_eff = 0.25;
+    double xi_max = sc->t_contact / c;
+    sc->hertz_k = 5 * m_eff / (4 * pow(xi_max, 2.5)) / sqrt(r_eff);
+  } else if (given(sc, K_HERTZ_AD)) {
+    return pair_error(sc, K_HERTZ_AD, K_CONTACT, "only for contact = hertz");
+  }
+  if (sc->bridge_law == 1) { /* Willett */
+    if (given(sc, K_S_CRIT))
+      return pair_error(sc, K_S_CRIT, K_BRIDGE_LAW,
+                        "with the Willett law s_crit follows from bridge_volume (Eq. 2.10)");
+    if (given(sc, K_E_CB_MGS))
+      return pair_error(sc, K_E_CB_MGS, K_BRIDGE_LAW,
+                        "with the Willett law give f_b (force at contact) or e_cb");
+    if (!given(sc, K_BRIDGE_VOLUME))
+      return pair_error(sc, K_BRIDGE_VOLUME, K_BRIDGE_LAW, "required key missing");
+    double r = 0.5, v = sc->bridge_volume / (r * r * r);
+    sc->s_crit = r * (1 + sc->contact_angle / 2) * (cbrt(v) + 0.1 * cbrt(v * v)); /* Eq. 2.10 */
+  } else if (given(sc, K_BRIDGE_VOLUME) || given(sc, K_CONTACT_ANGLE)) {
+    return pair_error(sc, given(sc, K_BRIDGE_VOLUME) ? K_BRIDGE_VOLUME : K_CONTACT_ANGLE,
+                      K_BRIDGE_LAW, "only for bridge_law = willett");
+  }
+  return WG_OK;
+}
+
+/* Mean of the Willett profile 1 / (1 + 1.05 x + 2.5 x^2) (Eq. 2.9) over 0 <= x <= x_c:
+   the rupture energy is F_B s_crit times this. */
+double wg_willett_mean(double x_c)
+{
+  const double q = sqrt(4 * 2.5 - 1.05 * 1.05);
+  if (x_c <= 0) return 1;
+  return 2 / q * (atan((5 * x_c + 1.05) / q) - atan(1.05 / q)) / x_c;
+}
+
 static int resolve_bridge(wg_scene *sc)
 {
   static const int forms[] = {K_E_CB, K_E_CB_MGS, K_F_B};
@@ -707,9 +795,12 @@ static int resolve_bridge(wg_scene *sc)
                       "a bridge energy needs s_crit > 0 (s_crit = 0 is a dry run)");
   if (n == 0 && sc->s_crit > 0)
     return key_error(sc, K_S_CRIT, "a wet run (s_crit > 0) needs one of e_cb, e_cb_mgs, f_b");
+  double w = 1; /* E_cb = F_B s_crit w */
+  if (sc->engine == WG_ENGINE_TD && sc->bridge_law == 1)
+    w = wg_willett_mean(sc->s_crit * sqrt(0.5 / sc->bridge_volume));
   if (n == 0) sc->e_cb = sc->f_b = 0;
-  else if (set[0] == K_E_CB) sc->f_b = sc->e_cb / sc->s_crit;
-  else sc->e_cb = sc->f_b * sc->s_crit;
+  else if (set[0] == K_E_CB) sc->f_b = sc->e_cb / (sc->s_crit * w);
+  else sc->e_cb = sc->f_b * sc->s_crit * w;
   return WG_OK;
 }
 
@@ -817,7 +908,7 @@ int wg_scene_finish(wg_scene *sc)
 {
   int rc;
   if ((rc = check_required(sc)) || (rc = resolve_box(sc)) || (rc = resolve_gravity(sc)) ||
-      (rc = resolve_bridge(sc)) || (rc = resolve_driving(sc)) ||
+      (rc = resolve_engine(sc)) || (rc = resolve_bridge(sc)) || (rc = resolve_driving(sc)) ||
       (rc = resolve_temperature(sc)) || (rc = resolve_output_times(sc)) ||
       (rc = check_packing(sc)))
     return rc;
@@ -864,8 +955,10 @@ void wg_scene_print_keys(FILE *out)
   for (int k = 0; k < NKEYS; k++) {
     format_default(k, dflt, sizeof dflt);
     format_allowed(k, allowed, sizeof allowed);
-    fprintf(out, "  %-14s %-24s %-10s %-18s %s\n", keys[k].name, dflt,
-            keys[k].unit[0] ? keys[k].unit : "1", allowed, keys[k].desc);
+    fprintf(out, "  %-14s %-24s %-10s %-18s %s%s\n", keys[k].name, dflt,
+            keys[k].unit[0] ? keys[k].unit : "1", allowed,
+            keys[k].only == ONLY_ED ? "[ed] " : keys[k].only == ONLY_TD ? "[td] " : "",
+            keys[k].desc);
   }
 }
 
@@ -875,16 +968,23 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user)
     {"amplitude", sc->amplitude, "d", "derived: shaking amplitude A (0 if not a shaker)"},
     {"omega", sc->omega, "sqrt(g/d)", "derived: angular frequency w of the shaker"},
     {"t_driv", sc->t_driv, "sqrt(d/g)", "derived: driving period 2 pi / w"},
+    /* time-driven only */
+    {"dt", sc->dt, "sqrt(d/g)", "derived: time step t_contact / steps_per_contact"},
+    {"hertz_k", sc->hertz_k, "m g / d^2", "derived: Hertz K of Eq. 2.7 for contact time t_contact at speed 1"},
   };
   char buf[64];
-  int rc;
+  int rc, only = sc->engine == WG_ENGINE_TD ? ONLY_TD : ONLY_ED;
   for (int k = 0; k < NKEYS; k++) {
+    if (keys[k].only && keys[k].only != only) continue; /* the other engine's keys */
     format_value(sc, k, buf, sizeof buf);
     if ((rc = fn(user, keys[k].name, buf, keys[k].unit[0] ? keys[k].unit : "1",
                  keys[k].desc)))
       return rc;
   }
-  for (size_t i = 0; i < sizeof derived / sizeof derived[0]; i++) {
+  size_t nd = sizeof derived / sizeof derived[0];
+  for (size_t i = 0; i < nd; i++) {
+    if (i >= 3 && only != ONLY_TD) break;
+    if (i == 4 && sc->contact_law != 1) continue;
     snprintf(buf, sizeof buf, "%.17g", derived[i].value);
     if ((rc = fn(user, derived[i].name, buf, derived[i].unit, derived[i].desc))) return rc;
   }

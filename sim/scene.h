@@ -45,11 +45,24 @@ typedef struct wg_scene {
   double dt_profile;   /* dt_profile: sampling interval of profiles (default dt_series) */
   double dt_checkpoint;/* dt_checkpoint: checkpoint interval, 0 = none (default t_end/10) */
 
+  /* time-driven engine (engine = td) */
+  int contact_law;     /* contact = linear | hertz (WG_CONTACT_LINEAR / _HERTZ, contact.h) */
+  double t_contact;    /* t_contact: contact time of two unit masses (0.005) */
+  double steps_per_contact; /* steps_per_contact: dt = t_contact / steps_per_contact (50) */
+  double hertz_ad;     /* hertz_ad: Hertz dissipative constant A_d (0) */
+  double skin;         /* skin: neighbour-list skin (0.1) */
+  int bridge_law;      /* bridge_law = constant | willett */
+  double bridge_volume;/* bridge_volume: V for the Willett law [d^3] */
+  double contact_angle;/* contact_angle: theta_c in Eq. 2.10 [rad] (0) */
+
   /* --- derived by wg_scene_finish() --- */
   double amplitude;    /* A [d]: from gamma and estar (or estar_d); 0 when not a shaker */
   double omega;        /* w [sqrt(g/d)]; 0 when not a shaker */
   double t_driv;       /* 2 pi / w; 0 when not a shaker */
-  double f_b;          /* F_B = E_cb / s_crit [m g]; 0 when dry */
+  double f_b;          /* F_B [m g]: E_cb / s_crit (constant law), E_cb / (s_crit w) (Willett,
+                          w: mean of Eq. 2.9 over 0..s_crit); 0 when dry */
+  double dt;           /* td: time step t_contact / steps_per_contact */
+  double hertz_k;      /* td, Hertz: K of Eq. 2.7 giving contact time t_contact at speed 1 */
 
   /* bookkeeping of where each key came from, for error messages and provenance */
   char source[256];    /* scene file path ("<none>" if only command-line pairs) */
@@ -69,6 +82,9 @@ int wg_scene_set_override(wg_scene *sc, const char *pair);
 /* Check required keys, ranges and consistency, and derive A, w, t_driv, f_b, e_cb.
    Errors name the file (and line, where the key was set) and the key. */
 int wg_scene_finish(wg_scene *sc);
+
+/* Mean of Willett's force profile 1 / (1 + 1.05 x + 2.5 x^2) (Eq. 2.9) over 0 <= x <= x_c. */
+double wg_willett_mean(double x_c);
 
 /* Print the table of keys (name, unit, default, description) for --help. */
 void wg_scene_print_keys(FILE *out);

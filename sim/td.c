@@ -28,25 +28,33 @@ static int cmp_pair(const void *a, const void *b)
   return (p->j > q->j) - (p->j < q->j);
 }
 
+/* Attraction of a bonded pair at gap s: F_B, or Willett's law for s > 0 (Eq. 2.9). */
+static double bond_force(const wg_td_params *p, double gap)
+{
+  double x = gap * p->willett;
+  return x > 0 ? p->f_b / (1 + 1.05 * x + 2.5 * x * x) : p->f_b;
+}
+
 static double cutoff_extra(const wg_td *s) { return (s->par.f_b > 0 ? s->par.s_crit : 0) + s->par.skin; }
 
 /* The neighbour list from scratch: pairs closer than contact + s_crit + skin.  Periodic
-   coordinates are wrapped first.  Bonds carry over by pair identity. */
+   coordinates are wrapped first.  A pair's state (bond, contact) carries over by identity. */
 static int build_list(wg_td *s)
 {
   int dim = s->par.dim;
-  wg_td_pair *bonded = NULL;
-  long nb = 0;
-  if (s->par.f_b > 0) {
-    for (long k = 0; k < s->npair; k++) nb += s->pair[k].bonded;
-    if (nb) {
-      bonded = malloc(sizeof *bonded * (size_t)nb);
-      if (!bonded) return wg_error(WG_ENOMEM, "td", "cannot allocate %ld bonds", nb);
-      nb = 0;
-      for (long k = 0; k < s->npair; k++)
-        if (s->pair[k].bonded) bonded[nb++] = s->pair[k];
-      qsort(bonded, (size_t)nb, sizeof *bonded, cmp_pair);
-    }
+  wg_td_pair *bonded = NULL; /* every pair with state: bonded or touching */
+  long nb = 0, nbond = 0;
+  for (long k = 0; k < s->npair; k++) nb += s->pair[k].bonded | s->pair[k].touching;
+  if (nb) {
+    bonded = malloc(sizeof *bonded * (size_t)nb);
+    if (!bonded) return wg_error(WG_ENOMEM, "td", "cannot allocate %ld pair states", nb);
+    nb = 0;
+    for (long k = 0; k < s->npair; k++)
+      if (s->pair[k].bonded | s->pair[k].touching) {
+        bonded[nb++] = s->pair[k];
+        nbond += s->pair[k].bonded;
+      }
+    qsort(bonded, (size_t)nb, sizeof *bonded, cmp_pair);
   }
   for (long i = 0; i < s->n; i++)
     for (int a = 0; a < dim; a++)
@@ -75,8 +83,9 @@ static int build_list(wg_td *s)
           s->pair = p;
           s->pair_cap = cap;
         }
-        wg_td_pair q = {.i = (int32_t)i, .j = j, .bonded = 0};
-        if (nb && bsearch(&q, bonded, (size_t)nb, sizeof *bonded, cmp_pair)) q.bonded = 1;
+        wg_td_pair q = {.i = (int32_t)i, .j = j, .bonded = 0, .touching = 0};
+        const wg_td_pair *old = nb ? bsearch(&q, bonded, (size_t)nb, sizeof *bonded, cmp_pair) : NULL;
+        if (old) q = *old;
         s->pair[s->npair++] = q;
       }
   }
@@ -84,7 +93,8 @@ static int build_list(wg_td *s)
   long kept = 0;
   for (long k = 0; k < s->npair; k++) kept += s->pair[k].bonded;
   free(bonded);
-  if (kept != nb) return wg_error(WG_EFAIL, "td", "neighbour list lost %ld bonds at t = %g", nb - kept, s->t);
+  if (kept != nbond)
+    return wg_error(WG_EFAIL, "td", "neighbour list lost %ld bonds at t = %g", nbond - kept, s->t);
   memcpy(s->r_built, s->r, sizeof *s->r * 3 * (size_t)s->n);
   s->rebuilds++;
   return WG_OK;
@@ -110,7 +120,7 @@ static void forces(wg_td *s, const double *vel)
 {
   int dim = s->par.dim, up = s->up, wet = s->par.f_b > 0;
   memset(s->f, 0, sizeof *s->f * 3 * (size_t)s->n);
-  double u_contact = 0, u_bond = 0, p_wall = 0, p_diss = 0;
+  double u_contact = 0, u_bond = 0, p_wall = 0, p_diss = 0, p_diss_wall = 0;
   for (long i = 0; i < s->n; i++) s->f[3 * i + up] = -s->par.g * td_mass(s, i);
   for (long k = 0; k < s->npair; k++) {
     wg_td_pair *p = &s->pair[k];
@@ -121,24 +131,33 @@ static void forces(wg_td *s, const double *vel)
     for (int a = 0; a < dim; a++) dist += d[a] * d[a];
     dist = sqrt(dist);
     double gap = dist - s->radius[i] - s->radius[j];
-    if (gap > 0 && !p->bonded) continue;
+    if (gap > 0 && !p->bonded) {
+      p->touching = 0;
+      continue;
+    }
     double nrm[3] = {0, 0, 0}, gapdot = 0;
     for (int a = 0; a < dim; a++) {
       nrm[a] = d[a] / dist;
       gapdot += (vel[3 * j + a] - vel[3 * i + a]) * nrm[a];
     }
     if (wet) {
-      if (p->bonded && gap > s->par.s_crit) { /* rupture: the bond energy F_B gap goes */
+      /* The bond force switches on or off between two steps, and Verlet applies half of the
+         last step's force: the energy booked is the bond energy less that half step's work. */
+      if (p->bonded && gap > s->par.s_crit) { /* rupture: the bond energy goes */
         p->bonded = 0;
         s->ruptures++;
-        ksum_add(&s->dissipated_rupt, s->par.f_b * gap);
+        ksum_add(&s->dissipated_rupt, wg_td_bond_energy(&s->par, gap) -
+                                          0.5 * bond_force(&s->par, gap) * gapdot * s->par.dt);
       } else if (!p->bonded && gap < 0) { /* capture at contact */
         p->bonded = 1;
         s->captures++;
-        ksum_add(&s->dissipated_rupt, -s->par.f_b * gap);
+        ksum_add(&s->dissipated_rupt, -wg_td_bond_energy(&s->par, gap) +
+                                          0.5 * s->par.f_b * gapdot * s->par.dt);
       }
     }
     double fn = 0; /* along nrm on j (repulsive > 0) */
+    if (gap < 0 && !p->touching) s->contacts++;
+    p->touching = gap < 0;
     if (gap < 0) {
       double mi = td_mass(s, i), mj = td_mass(s, j), fel, uel;
       double reff = s->radius[i] * s->radius[j] / (s->radius[i] + s->radius[j]);
@@ -147,8 +166,8 @@ static void forces(wg_td *s, const double *vel)
       p_diss += (fn - fel) * -gapdot;
     }
     if (p->bonded) {
-      fn -= s->par.f_b;
-      u_bond += s->par.f_b * gap;
+      fn -= bond_force(&s->par, gap);
+      u_bond += wg_td_bond_energy(&s->par, gap);
     }
     for (int a = 0; a < dim; a++) {
       s->f[3 * j + a] += fn * nrm[a];
@@ -160,19 +179,26 @@ static void forces(wg_td *s, const double *vel)
     double zw = wg_wall_position(wl, s->t), vw = wg_wall_velocity(wl, s->t);
     for (long i = 0; i < s->n; i++) {
       double gap = wl->side * (s->r[3 * i + up] - zw) - s->radius[i];
-      if (gap >= 0) continue;
+      uint8_t bit = (uint8_t)(1u << w);
+      if (gap >= 0) {
+        s->wall_touch[i] &= (uint8_t)~bit;
+        continue;
+      }
+      if (!(s->wall_touch[i] & bit)) s->wall_contacts++;
+      s->wall_touch[i] |= bit;
       double xidot = -wl->side * (vel[3 * i + up] - vw), fel, uel;
       double fn = wg_contact_force(&s->par.pw, -gap, xidot, s->radius[i], td_mass(s, i), &fel, &uel);
       s->f[3 * i + up] += wl->side * fn;
       u_contact += uel;
       p_wall += wl->side * fn * vw;
-      p_diss += (fn - fel) * xidot;
+      p_diss_wall += (fn - fel) * xidot;
     }
   }
   s->u_contact = u_contact;
   s->u_bond = u_bond;
   s->p_wall = p_wall;
   s->p_diss = p_diss;
+  s->p_diss_wall = p_diss_wall;
 }
 
 int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r,
@@ -189,9 +215,11 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
   s->f = calloc(n3, sizeof *s->f);
   s->vp = calloc(n3, sizeof *s->vp);
   s->r_built = calloc(n3, sizeof *s->r_built);
+  s->wall_touch = calloc((size_t)n, 1);
   s->radius = malloc(sizeof *s->radius * (size_t)n);
   if (mass) s->mass = malloc(sizeof *s->mass * (size_t)n);
-  if (!s->r || !s->v || !s->f || !s->vp || !s->r_built || !s->radius || (mass && !s->mass)) {
+  if (!s->r || !s->v || !s->f || !s->vp || !s->r_built || !s->wall_touch || !s->radius ||
+      (mass && !s->mass)) {
     wg_td_free(s);
     return wg_error(WG_ENOMEM, "td", "cannot allocate %ld particles", n);
   }
@@ -230,6 +258,7 @@ void wg_td_free(wg_td *s)
   free(s->f);
   free(s->vp);
   free(s->r_built);
+  free(s->wall_touch);
   free(s->radius);
   free(s->mass);
   free(s->pair);
@@ -244,7 +273,7 @@ int wg_td_advance(wg_td *s, double t_stop)
 {
   double dt = s->par.dt;
   while (s->t < t_stop - 0.5 * dt) {
-    double p_wall0 = s->p_wall, p_diss0 = s->p_diss;
+    double p_wall0 = s->p_wall, p_diss0 = s->p_diss, p_diss_wall0 = s->p_diss_wall;
     for (long i = 0; i < s->n; i++) {
       double h = 0.5 * dt / td_mass(s, i);
       for (int a = 0; a < s->par.dim; a++) {
@@ -266,6 +295,7 @@ int wg_td_advance(wg_td *s, double t_stop)
     }
     ksum_add(&s->injected_wall, 0.5 * (p_wall0 + s->p_wall) * dt);
     ksum_add(&s->dissipated, 0.5 * (p_diss0 + s->p_diss) * dt);
+    ksum_add(&s->dissipated_wall, 0.5 * (p_diss_wall0 + s->p_diss_wall) * dt);
   }
   return WG_OK;
 }
@@ -288,7 +318,8 @@ double wg_td_ledger_residual(const wg_td *s)
   double k, u;
   wg_td_energy(s, &k, &u);
   double in = s->injected_wall.s + s->injected_wall.c;
-  double out = s->dissipated.s + s->dissipated.c + s->dissipated_rupt.s + s->dissipated_rupt.c;
+  double out = s->dissipated.s + s->dissipated.c + s->dissipated_wall.s + s->dissipated_wall.c +
+               s->dissipated_rupt.s + s->dissipated_rupt.c;
   double scale = fmax(fmax(fabs(k + u), fabs(s->e0)), fmax(fabs(in), fabs(out)));
   return fabs(k + u - s->e0 - in + out) / fmax(scale, 1e-300);
 }
@@ -300,14 +331,23 @@ long wg_td_bond_total(const wg_td *s)
   return b;
 }
 
-wg_td_options wg_td_default_options(void)
+double wg_td_bond_energy(const wg_td_params *p, double gap)
 {
-  wg_td_options o = {.law = WG_CONTACT_LINEAR, .t_c = 0.005, .steps_per_tc = 50, .skin = 0.1,
-                     .hertz_k = 1e5, .hertz_ad = 0};
-  return o;
+  if (gap <= 0 || p->willett <= 0) return p->f_b * gap;
+  /* integral of Eq. 2.9 from 0 to gap */
+  const double q = sqrt(4 * 2.5 - 1.05 * 1.05);
+  double x = gap * p->willett;
+  return p->f_b / p->willett * 2 / q * (atan((5 * x + 1.05) / q) - atan(1.05 / q));
 }
 
-void wg_td_params_from_scene(const wg_scene *sc, const wg_td_options *opt, wg_td_params *out)
+double wg_td_bytes_per_particle(const wg_td *s)
+{
+  double per = 6 * 3 * sizeof(double) + 2 * sizeof(double) + 1; /* r v f vp r_built; radius mass */
+  return per + (double)s->pair_cap * sizeof(wg_td_pair) / (double)(s->n > 0 ? s->n : 1) +
+         3 * sizeof(int32_t);
+}
+
+void wg_td_params_from_scene(const wg_scene *sc, wg_td_params *out)
 {
   int dim = sc->dim, up = dim - 1;
   wg_td_params p;
@@ -326,25 +366,26 @@ void wg_td_params_from_scene(const wg_scene *sc, const wg_td_options *opt, wg_td
     p.lo[up] = -sc->amplitude - 1;
     p.hi[up] = sc->height + sc->amplitude + 1;
   }
-  if (opt->law == WG_CONTACT_HERTZ) {
-    p.pp = p.pw = wg_contact_hertz(opt->hertz_k, opt->hertz_ad);
+  if (sc->contact_law == WG_CONTACT_HERTZ) {
+    p.pp = p.pw = wg_contact_hertz(sc->hertz_k, sc->hertz_ad);
   } else {
-    p.pp = wg_contact_linear(sc->eps, opt->t_c, 0.5);      /* two unit masses */
-    p.pw = wg_contact_linear(sc->eps_wall, opt->t_c, 1.0); /* a unit mass on a wall */
+    p.pp = wg_contact_linear(sc->eps, sc->t_contact, 0.5);      /* two unit masses */
+    p.pw = wg_contact_linear(sc->eps_wall, sc->t_contact, 1.0); /* a unit mass on a wall */
   }
   if (sc->s_crit > 0) {
     p.f_b = sc->f_b;
     p.s_crit = sc->s_crit;
+    if (sc->bridge_law == 1) p.willett = sqrt(0.5 / sc->bridge_volume); /* sqrt(R/V), R = d/2 */
   }
-  p.dt = opt->t_c / opt->steps_per_tc;
-  p.skin = opt->skin;
+  p.dt = sc->dt;
+  p.skin = sc->skin;
   *out = p;
 }
 
-int wg_td_alloc(wg_td *s, const wg_scene *sc, const wg_td_options *opt)
+int wg_td_alloc(wg_td *s, const wg_scene *sc)
 {
   wg_td_params p;
-  wg_td_params_from_scene(sc, opt, &p);
+  wg_td_params_from_scene(sc, &p);
   long n = sc->n;
   wg_particle *q = malloc(sizeof *q * (size_t)n);
   double *mass = sc->mass_scaling ? malloc(sizeof *mass * (size_t)n) : NULL;

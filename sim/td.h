@@ -31,6 +31,8 @@ typedef struct wg_td_params {
   wg_wall wall[2];
   wg_contact pp, pw;       /* particle-particle and particle-wall laws */
   double f_b, s_crit;      /* minimal capillary model; f_b = 0: dry, no bond bookkeeping */
+  double willett;          /* > 0: Willett's law (Eq. 2.9) with s^ = gap * willett
+                              (= sqrt(R/V)); 0: constant F_B */
   double dt;               /* time step [sqrt(d/g)] */
   double skin;             /* neighbour-list skin [d] */
 } wg_td_params;
@@ -40,6 +42,7 @@ typedef struct wg_td_params {
 typedef struct wg_td_pair {
   int32_t i, j;            /* i < j */
   uint8_t bonded;
+  uint8_t touching;        /* overlapping at the last force evaluation (counts contacts) */
 } wg_td_pair;
 
 typedef struct wg_td {
@@ -50,39 +53,29 @@ typedef struct wg_td {
   double *vp;              /* velocities predicted at the full step (n x 3) */
   double *radius, *mass;   /* mass NULL: every mass is 1 */
   double *r_built;         /* positions at the last list build (n x 3) */
+  uint8_t *wall_touch;     /* bit w: touching wall w at the last force evaluation */
   double r_max;            /* largest radius */
   wg_td_pair *pair;
   long npair, pair_cap;
   wg_cells cells;
   double t, t0;             /* now = t0 + steps dt */
   unsigned long long steps, rebuilds, captures, ruptures;
+  unsigned long long contacts, wall_contacts; /* particle-particle and wall contacts begun */
   /* ledger [m g d] */
-  wg_ksum injected_wall, dissipated, dissipated_rupt;
+  wg_ksum injected_wall, dissipated, dissipated_wall, dissipated_rupt;
   double e0;
   double u_contact, u_bond; /* elastic and bond energy at the last force evaluation */
-  double p_wall, p_diss;    /* their powers there */
+  double p_wall, p_diss, p_diss_wall; /* their powers there (dashpots: particle, wall) */
 } wg_td;
 
-/* Settings of the time-driven engine that a scene does not yet carry (scene keys to come):
-   the contact law, the contact time t_c of the linear law for a pair of unit masses, the
-   time step as a fraction of it, the skin, and Hertz's K and A_d. */
-typedef struct wg_td_options {
-  wg_contact_law law;
-  double t_c;          /* [sqrt(d/g)], default 0.005 */
-  double steps_per_tc; /* dt = t_c / steps_per_tc, default 50 */
-  double skin;         /* [d], default 0.1 */
-  double hertz_k, hertz_ad;
-} wg_td_options;
-wg_td_options wg_td_default_options(void);
+/* The engine's parameters for a finished scene: container, gravity, driving; the contact
+   law (contact, t_contact or Hertz's K and hertz_ad, eps and eps_wall as the linear law's
+   restitution); the bridge (F_B, s_crit, bridge_law, bridge_volume); dt and skin. */
+void wg_td_params_from_scene(const wg_scene *sc, wg_td_params *p);
 
-/* The engine's parameters for a finished scene (container, gravity, driving, eps and
-   eps_wall as the laws' restitution, F_B and s_crit). */
-void wg_td_params_from_scene(const wg_scene *sc, const wg_td_options *opt, wg_td_params *p);
-
-/* Set up from a finished scene (container, gravity, driving, eps and eps_wall as the laws'
-   restitution, F_B and s_crit) with the event-driven engine's initial state: the same
+/* Set up from a finished scene with the event-driven engine's initial state: the same
    lattice, diameters and velocities from the same seed. */
-int wg_td_alloc(wg_td *s, const wg_scene *sc, const wg_td_options *opt);
+int wg_td_alloc(wg_td *s, const wg_scene *sc);
 
 /* Allocate for n particles and copy positions, velocities, radii, masses (may be NULL: unit
    masses); time t0.  Builds the neighbour list and the first forces. */
@@ -99,5 +92,10 @@ void wg_td_energy(const wg_td *s, double *kinetic, double *potential);
 double wg_td_ledger_residual(const wg_td *s);
 /* Number of bonded pairs. */
 long wg_td_bond_total(const wg_td *s);
+/* Bond energy of a bonded pair at gap s (zero at contact): F_B s (constant law, and during
+   overlap) or the integral of Eq. 2.9. */
+double wg_td_bond_energy(const wg_td_params *p, double gap);
+/* Bytes of engine memory per particle (arrays and neighbour list). */
+double wg_td_bytes_per_particle(const wg_td *s);
 
 #endif

@@ -38,6 +38,7 @@ static double head_on(const wg_td_params *par, const double *rad, const double *
     double gap = s.r[3] - s.r[0] - rad[0] - rad[1];
     if (gap < 0 && t_in < 0) t_in = s.t;
     if (gap < 0) t_out = s.t;
+    if (gap > 0 && t_out > 0) break; /* the contact is over (no periodic re-encounter) */
   }
   *duration = t_out - t_in + par->dt;
   double du = s.v[3] - s.v[0];
@@ -193,6 +194,68 @@ static void ledger_convergence(void)
   TH_CHECK(r2 < r1 / 2.4, "the residual falls faster than dt (ratio %.2f for dt halved)", r1 / r2);
 }
 
+/* Scene-derived settings: Hertz's K from t_contact (the elastic contact at speed 1 lasts
+   t_contact), and Willett's law (Eq. 2.9-2.10): the pair loses exactly the scene's E_cb. */
+static wg_td_params scene_params(const char *const *kv)
+{
+  wg_scene sc;
+  wg_td_params p;
+  memset(&p, 0, sizeof p);
+  wg_scene_init(&sc);
+  for (int k = 0; kv[k]; k++)
+    if (wg_scene_set_override(&sc, kv[k]) != WG_OK) return p;
+  if (wg_scene_finish(&sc) != WG_OK) return p;
+  wg_td_params_from_scene(&sc, &p);
+  /* the scene's container, without gravity: a free pair */
+  p.g = 0;
+  p.nwalls = 0;
+  p.periodic[1] = 1;
+  p.box[1] = 20;
+  return p;
+}
+
+static void scene_laws(void)
+{
+  const char *hertz[] = {"engine=td", "dim=2", "n=2", "lx=20", "height=20", "container=periodic",
+                         "gravity=0", "sigma_p=0", "contact=hertz", "t_contact=0.004",
+                         "steps_per_contact=400", "tg_init_abs=1", "seed=1", "t_end=1", NULL};
+  wg_td_params p = scene_params(hertz);
+  double rad[2] = {0.5, 0.5}, dur;
+  TH_CHECK(p.dt > 0 && p.pp.law == WG_CONTACT_HERTZ, "scene with contact = hertz: dt = %g", p.dt);
+  double du = head_on(&p, rad, NULL, 1.0, &dur);
+  TH_CLOSE("Hertz K from t_contact: the contact at speed 1 lasts t_contact = 0.004", dur, 0.004, 0, 1.5 * p.dt);
+  TH_CLOSE("... and is elastic (hertz_ad = 0)", du, 1.0, 1e-4, 0);
+  du = head_on(&p, rad, NULL, 32.0, &dur);
+  TH_CLOSE("at speed 32 it lasts t_contact 32^(-1/5) = t_contact / 2", dur, 0.002, 0, 1.5 * p.dt);
+
+  const char *willett[] = {"engine=td", "dim=2", "n=2", "lx=20", "height=20", "container=periodic",
+                           "gravity=0", "sigma_p=0", "bridge_law=willett", "bridge_volume=0.001",
+                           "f_b=4", "tg_init_abs=1", "seed=1", "t_end=1", NULL};
+  p = scene_params(willett);
+  double s_crit = 0.5 * (0.2 + 0.1 * 0.04), x_c = s_crit * sqrt(0.5 / 0.001);
+  /* E_cb: F_B sqrt(V/R) times the integral of 1 / (1 + 1.05 x + 2.5 x^2) from 0 to x_c, by
+     the midpoint rule here (the code uses the closed form) */
+  double integral = 0;
+  for (int k = 0; k < 100000; k++) {
+    double x = (k + 0.5) * x_c / 100000;
+    integral += x_c / 100000 / (1 + 1.05 * x + 2.5 * x * x);
+  }
+  double e_cb = 4 * sqrt(0.001 / 0.5) * integral, mu = 0.5;
+  TH_CLOSE("Willett: s_crit from Eq. 2.10 (V = 0.001, R = 1/2)", p.s_crit, s_crit, 1e-12, 0);
+  TH_CLOSE("Willett: the scene's E_cb is F_B times the integral of Eq. 2.9", wg_td_bond_energy(&p, s_crit), e_cb, 1e-6, 0);
+  double u = sqrt(2 * 3 * e_cb / mu);
+  double r[6] = {8, 10, 0, 8.999999, 10, 0}, v[6] = {-0.5 * u, 0, 0, 0.5 * u, 0, 0};
+  wg_td s;
+  TH_CHECK(wg_td_alloc_state(&s, &p, 2, r, v, rad, NULL, 0) == WG_OK && wg_td_bond_total(&s) == 1,
+           "Willett pair bonded at contact");
+  wg_td_advance(&s, 1);
+  du = s.v[3] - s.v[0];
+  TH_CHECK(s.ruptures == 1, "the Willett bond breaks once");
+  TH_CLOSE("kinetic energy after rupture: 1/2 mu u^2 - E_cb (Willett)", 0.5 * mu * du * du, 2 * e_cb, 2e-3, 0);
+  TH_CHECK(wg_td_ledger_residual(&s) < 1e-4, "ledger across the Willett rupture: residual %.2e", wg_td_ledger_residual(&s));
+  wg_td_free(&s);
+}
+
 int main(void)
 {
   linear_contact();
@@ -200,5 +263,6 @@ int main(void)
   floor_bounce();
   capillary_pair();
   ledger_convergence();
+  scene_laws();
   return th_summary();
 }

@@ -49,9 +49,8 @@ static void td_bed(const char *name, const char *const *kv, double t_sim)
 {
   wg_scene sc;
   if (scene(&sc, kv)) exit(1);
-  wg_td_options opt = wg_td_default_options();
   wg_td s;
-  if (wg_td_alloc(&s, &sc, &opt) != WG_OK) exit(1);
+  if (wg_td_alloc(&s, &sc) != WG_OK) exit(1);
   wg_td_advance(&s, SETTLE); /* let the lattice start fall into a bed, out of the timing */
   unsigned long long steps0 = s.steps;
   double w0 = now_s();
@@ -113,10 +112,10 @@ int main(int argc, char **argv)
 {
   double t3 = argc > 1 ? atof(argv[1]) : 0.5, t2 = argc > 2 ? atof(argv[2]) : 5;
   printf("case\tengine\tn\tsim_time\twall_s\trate\tunit\n");
-  const char *bed_dry[] = {"dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
+  const char *bed_dry[] = {"engine=td", "dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
                            "eps=0.9", "eps_wall=0.9", "gamma=4", "estar_d=2", "tg_init_abs=1",
                            "seed=1", "t_end=1", NULL};
-  const char *bed_wet[] = {"dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
+  const char *bed_wet[] = {"engine=td", "dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
                            "eps=0.9", "eps_wall=0.9", "gamma=4", "estar=2", "s_crit=0.0711",
                            "f_b=16", "tg_init=1", "seed=1", "t_end=1", NULL};
   td_bed("bed3d_N1e4_dry", bed_dry, t3);
@@ -143,9 +142,10 @@ int main(int argc, char **argv)
     wg_ed_position_of(&ed, id, ed.now, r + 3 * id, v + 3 * id);
     rad[id] = ed.p[ed.slot[id]].radius;
   }
-  wg_td_options opt = wg_td_default_options();
+  sc.engine = WG_ENGINE_TD; /* the time-driven engine's defaults for the same physics */
+  if (wg_scene_finish(&sc) != WG_OK) return 1;
   wg_td_params par;
-  wg_td_params_from_scene(&sc, &opt, &par);
+  wg_td_params_from_scene(&sc, &par);
   wg_td td;
   if (wg_td_alloc_state(&td, &par, n, r, v, rad, NULL, ed.now) != WG_OK) return 1;
   wg_ed_free(&ed);
