@@ -79,6 +79,7 @@ $(BIN)/wetgran-%: analysis/%.c $(LIB) | $(BIN)
 
 # wetgran-boundary triangulates with qhull (reentrant library)
 $(BIN)/wetgran-boundary: LIBS += -lqhull_r
+$(BIN)/wetgran-delaunay-flc: LIBS += -lqhull_r
 
 $(BUILD)/tests/%: tests/%.c tests/tharness.h $(LIB) | $(BUILD)/tests
 	$(CC) $(ALL_CFLAGS) -Itests $< $(LIB) $(LIBS) -o $@

@@ -34,6 +34,37 @@ static int lattice_counts(int dim, const double *len, long n, double dmax, int *
   return wg_error(WG_EINVAL, "initial state", "no lattice found for %ld particles", n);
 }
 
+/* A packed bed on the floor: rows of disks (hexagonal) or layers of spheres (square layers,
+   each shifted by half a spacing onto the hollows of the one below), lateral spacing
+   L / floor(L / dmax) >= dmax, filled from the floor up. */
+static int packed_bed(const wg_scene *sc, double dmax, wg_particle *p)
+{
+  int dim = sc->dim, up = dim - 1;
+  double len[2] = {sc->lx, sc->ly}, a[2] = {1, 1};
+  long per[2] = {1, 1};
+  for (int k = 0; k < dim - 1; k++) {
+    per[k] = (long)floor(len[k] / (dmax * 1.0000001));
+    a[k] = len[k] / (double)per[k];
+  }
+  double amax = dim == 3 ? fmax(a[0], a[1]) : a[0];
+  /* rows touch when their sites are dmax apart: vertical step sqrt(dmax^2 - shift^2) */
+  double shift2 = dim == 2 ? 0.25 * a[0] * a[0] : 0.25 * (a[0] * a[0] + a[1] * a[1]);
+  double dz = sqrt(fmax(dmax * dmax * 1.000001 - fmin(shift2, 0.5 * amax * amax), 0.0));
+  long per_layer = per[0] * per[1], layers = (sc->n + per_layer - 1) / per_layer;
+  double top = 0.5 * dmax + (double)(layers - 1) * dz + 0.5 * dmax;
+  if (top >= sc->height - 2 * sc->amplitude)
+    return wg_error(WG_EINVAL, "initial state",
+                    "a packed bed of %ld layers is %.3g high: no room in a container of height %g "
+                    "shaken with amplitude %g", layers, top, sc->height, sc->amplitude);
+  for (long i = 0; i < sc->n; i++) {
+    long layer = i / per_layer, site = i % per_layer;
+    long c[2] = {site % per[0], site / per[0]};
+    for (int k = 0; k < dim - 1; k++) p[i].r[k] = (c[k] + 0.5 * (layer % 2)) * a[k];
+    p[i].r[up] = 0.5 * dmax + (double)layer * dz;
+  }
+  return WG_OK;
+}
+
 int wg_init_state(const wg_scene *sc, wg_particle *p, double *mass)
 {
   int dim = sc->dim, up = dim - 1;
@@ -59,12 +90,12 @@ int wg_init_state(const wg_scene *sc, wg_particle *p, double *mass)
     len[up] = sc->height - dmax;
   }
   int count[3];
-  int st = lattice_counts(dim, len, n, dmax, count);
+  int st = sc->init_packing ? packed_bed(sc, dmax, p) : lattice_counts(dim, len, n, dmax, count);
   if (st != WG_OK) {
     gsl_rng_free(rng);
     return st;
   }
-  for (long i = 0; i < n; i++) {
+  for (long i = 0; !sc->init_packing && i < n; i++) {
     long rest = i;
     for (int k = 0; k < dim; k++) {
       long c = rest % count[k];

@@ -64,15 +64,16 @@ typedef struct {
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
-  K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
+  K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
-  K_BRIDGE_VOLUME, K_CONTACT_ANGLE, NKEYS
+  K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, NKEYS
 };
 
 static const char *const engine_words[] = {"ed", "td", NULL};
 static const char *const container_words[] = {"shaker", "periodic", NULL};
 static const char *const mass_words[] = {"unit", "volume", NULL};
+static const char *const init_words[] = {"lattice", "packed", NULL};
 static const char *const contact_words[] = {"linear", "hertz", NULL};
 static const char *const bridge_law_words[] = {"constant", "willett", NULL};
 
@@ -151,6 +152,9 @@ static const key_desc keys[NKEYS] = {
                      0, "dry: required", "m g d",
                      "initial granular temperature (dry runs, or instead of tg_init)", NULL,
                      G_TG, 1},
+  [K_INIT] = {"init", T_ENUM, OFF(init_packing), 0, 1, 0, DEF_VALUE, 0, NULL, "",
+              "initial positions: a lattice filling the container, or a packed bed on the "
+              "floor (hexagonal rows / stacked square layers)", init_words, 0, 0},
   [K_SEED] = {"seed", T_SEED, OFF(seed), 0, 0, 0, DEF_REQUIRED, 0, NULL, "",
               "seed of the random number generator (unsigned 64-bit)", NULL, 0, 0},
   [K_T_END] = {"t_end", T_DOUBLE, OFF(t_end), 0, INF, MIN_EXCL | MAX_EXCL, DEF_REQUIRED, 0,
@@ -201,6 +205,9 @@ static const key_desc keys[NKEYS] = {
   [K_CONTACT_ANGLE] = {"contact_angle", T_DOUBLE, OFF(contact_angle), 0, 1.5707963267948966,
                        MAX_EXCL, DEF_VALUE, 0, NULL, "rad",
                        "contact angle theta_c of the liquid in Eq. 2.10", NULL, 0, 0, ONLY_TD},
+  [K_WALL_BRIDGES] = {"wall_bridges", T_INT, OFF(wall_bridges), 0, 1, 0, DEF_VALUE, 0, NULL, "",
+                      "1: particles form bridges with floor and lid too (wet walls; the force "
+                      "balance of Eq. 4.15 holds the bed to the floor)", NULL, 0, 0, ONLY_TD},
 };
 
 _Static_assert(NKEYS <= sizeof(((wg_scene *)0)->key_line) / sizeof(int),
@@ -771,6 +778,8 @@ static int resolve_engine(wg_scene *sc)
     return pair_error(sc, given(sc, K_BRIDGE_VOLUME) ? K_BRIDGE_VOLUME : K_CONTACT_ANGLE,
                       K_BRIDGE_LAW, "only for bridge_law = willett");
   }
+  if (sc->wall_bridges && sc->s_crit == 0)
+    return pair_error(sc, K_WALL_BRIDGES, K_S_CRIT, "wall bridges need a wet scene (s_crit > 0)");
   return WG_OK;
 }
 
@@ -877,6 +886,13 @@ static int resolve_temperature(wg_scene *sc)
   return WG_OK;
 }
 
+static int check_fill(const wg_scene *sc)
+{
+  if (sc->init_packing && sc->container != WG_CONTAINER_SHAKER)
+    return pair_error(sc, K_INIT, K_CONTAINER, "a packed bed needs container = shaker");
+  return WG_OK;
+}
+
 static int resolve_output_times(wg_scene *sc)
 {
   if (!given(sc, K_DT_SERIES)) sc->dt_series = sc->t_end / 1000;
@@ -909,7 +925,7 @@ int wg_scene_finish(wg_scene *sc)
   int rc;
   if ((rc = check_required(sc)) || (rc = resolve_box(sc)) || (rc = resolve_gravity(sc)) ||
       (rc = resolve_engine(sc)) || (rc = resolve_bridge(sc)) || (rc = resolve_driving(sc)) ||
-      (rc = resolve_temperature(sc)) || (rc = resolve_output_times(sc)) ||
+      (rc = resolve_temperature(sc)) || (rc = check_fill(sc)) || (rc = resolve_output_times(sc)) ||
       (rc = check_packing(sc)))
     return rc;
   return WG_OK;

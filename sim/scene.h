@@ -36,6 +36,7 @@ typedef struct wg_scene {
   double estar_d;      /* estar_d: E*_d = (A w)^2 / (2 g d) (dry shaker) */
   double tg_init;      /* tg_init: initial T_g / E_cb (wet runs; default 20) */
   double tg_init_abs;  /* tg_init_abs: initial T_g [m g d] (dry runs, or instead of tg_init) */
+  int init_packing;    /* init = lattice | packed: sites fill the container, or a packed bed */
   unsigned long long seed; /* seed: RNG seed, required */
   double t_end;        /* t_end: simulated time [sqrt(d/g)], required */
   double dt_series;    /* dt_series: sampling interval of time series (default t_end/1000) */
@@ -52,6 +53,7 @@ typedef struct wg_scene {
   double hertz_ad;     /* hertz_ad: Hertz dissipative constant A_d (0) */
   double skin;         /* skin: neighbour-list skin (0.1) */
   int bridge_law;      /* bridge_law = constant | willett */
+  int wall_bridges;    /* wall_bridges: 1 = particles bond to floor and lid as to each other */
   double bridge_volume;/* bridge_volume: V for the Willett law [d^3] */
   double contact_angle;/* contact_angle: theta_c in Eq. 2.10 [rad] (0) */
 

@@ -177,21 +177,46 @@ static void forces(wg_td *s, const double *vel)
   for (int w = 0; w < s->par.nwalls; w++) {
     const wg_wall *wl = &s->par.wall[w];
     double zw = wg_wall_position(wl, s->t), vw = wg_wall_velocity(wl, s->t);
+    uint8_t bit = (uint8_t)(1u << w), bond_bit = (uint8_t)(4u << w);
     for (long i = 0; i < s->n; i++) {
       double gap = wl->side * (s->r[3 * i + up] - zw) - s->radius[i];
-      uint8_t bit = (uint8_t)(1u << w);
-      if (gap >= 0) {
+      int bonded = s->wall_touch[i] & bond_bit;
+      if (gap >= 0 && !bonded) {
         s->wall_touch[i] &= (uint8_t)~bit;
         continue;
       }
-      if (!(s->wall_touch[i] & bit)) s->wall_contacts++;
-      s->wall_touch[i] |= bit;
-      double xidot = -wl->side * (vel[3 * i + up] - vw), fel, uel;
-      double fn = wg_contact_force(&s->par.pw, -gap, xidot, s->radius[i], td_mass(s, i), &fel, &uel);
+      double xidot = -wl->side * (vel[3 * i + up] - vw), fn = 0; /* fn on the particle, away from the wall */
+      if (s->par.wall_bonds) { /* a bridge to the wall, as between particles */
+        if (bonded && gap > s->par.s_crit) {
+          s->wall_touch[i] &= (uint8_t)~bond_bit;
+          bonded = 0;
+          s->ruptures++;
+          ksum_add(&s->dissipated_rupt, wg_td_bond_energy(&s->par, gap) +
+                                            0.5 * bond_force(&s->par, gap) * xidot * s->par.dt);
+        } else if (!bonded && gap < 0) {
+          s->wall_touch[i] |= bond_bit;
+          bonded = 1;
+          s->captures++;
+          ksum_add(&s->dissipated_rupt, -wg_td_bond_energy(&s->par, gap) -
+                                            0.5 * s->par.f_b * xidot * s->par.dt);
+        }
+        if (bonded) {
+          fn -= bond_force(&s->par, gap);
+          u_bond += wg_td_bond_energy(&s->par, gap);
+        }
+      }
+      if (gap < 0) {
+        if (!(s->wall_touch[i] & bit)) s->wall_contacts++;
+        s->wall_touch[i] |= bit;
+        double fel, uel, fc = wg_contact_force(&s->par.pw, -gap, xidot, s->radius[i], td_mass(s, i), &fel, &uel);
+        fn += fc;
+        u_contact += uel;
+        p_diss_wall += (fc - fel) * xidot;
+      } else {
+        s->wall_touch[i] &= (uint8_t)~bit;
+      }
       s->f[3 * i + up] += wl->side * fn;
-      u_contact += uel;
       p_wall += wl->side * fn * vw;
-      p_diss_wall += (fn - fel) * xidot;
     }
   }
   s->u_contact = u_contact;
@@ -376,6 +401,7 @@ void wg_td_params_from_scene(const wg_scene *sc, wg_td_params *out)
     p.f_b = sc->f_b;
     p.s_crit = sc->s_crit;
     if (sc->bridge_law == 1) p.willett = sqrt(0.5 / sc->bridge_volume); /* sqrt(R/V), R = d/2 */
+    p.wall_bonds = sc->wall_bridges;
   }
   p.dt = sc->dt;
   p.skin = sc->skin;

@@ -31,6 +31,7 @@ typedef struct wg_td_params {
   wg_wall wall[2];
   wg_contact pp, pw;       /* particle-particle and particle-wall laws */
   double f_b, s_crit;      /* minimal capillary model; f_b = 0: dry, no bond bookkeeping */
+  int wall_bonds;          /* 1: particles bond to the walls too (same F_B, s_crit) */
   double willett;          /* > 0: Willett's law (Eq. 2.9) with s^ = gap * willett
                               (= sqrt(R/V)); 0: constant F_B */
   double dt;               /* time step [sqrt(d/g)] */
@@ -53,7 +54,8 @@ typedef struct wg_td {
   double *vp;              /* velocities predicted at the full step (n x 3) */
   double *radius, *mass;   /* mass NULL: every mass is 1 */
   double *r_built;         /* positions at the last list build (n x 3) */
-  uint8_t *wall_touch;     /* bit w: touching wall w at the last force evaluation */
+  uint8_t *wall_touch;     /* bit w: touching wall w at the last force evaluation;
+                              bit w + 2: bonded to wall w */
   double r_max;            /* largest radius */
   wg_td_pair *pair;
   long npair, pair_cap;

@@ -55,6 +55,10 @@ check "a time-driven key in an event-driven scene is refused" bash -c "[ $rc -ne
 check "Hertz with a restitution is refused (it dissipates through hertz_ad)" bash -c "[ $rc -ne 0 ] && grep -q 'hertz_ad' '$tmp/e3'"
 "$run" "$scenes/shake2d_td.ini" s_crit= bridge_law=willett -o "$tmp/x.h5" 2> "$tmp/e4"; rc=$?
 check "Willett without a bridge volume is refused" bash -c "[ $rc -ne 0 ] && grep -q \"'bridge_volume'.*required\" '$tmp/e4'"
+"$run" "$scenes/shake2d_dry.ini" engine=td tc= wall_bridges=1 -o "$tmp/x.h5" 2> "$tmp/e5"; rc=$?
+check "wall bridges in a dry scene are refused" bash -c "[ $rc -ne 0 ] && grep -q \"'wall_bridges'.*wet scene\" '$tmp/e5'"
+"$run" "$scenes/gas3d.ini" init=packed -o "$tmp/x.h5" 2> "$tmp/e6"; rc=$?
+check "a packed bed in a periodic box is refused" bash -c "[ $rc -ne 0 ] && grep -q \"'init'.*container = shaker\" '$tmp/e6'"
 check "no run file written by refused scenes" test ! -e "$tmp/x.h5"
 
 # Willett's law: s_crit from Eq. 2.10 (V = 0.001 d^3, R = d/2: s_crit = 0.102 d) and

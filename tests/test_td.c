@@ -256,6 +256,92 @@ static void scene_laws(void)
   wg_td_free(&s);
 }
 
+/* Wall bridges: a ball bonded to a resting floor (no gravity) and launched upward with
+   1/2 m u^2 = 3 E_cb leaves with 2 E_cb; with E_cb / 2 it stays bound, reaching s_crit / 2. */
+static void wall_bridge(void)
+{
+  double f_b = 4, s_crit = 0.0711, e_cb = f_b * s_crit;
+  wg_td_params p = free_params(1.0, 0.005);
+  p.periodic[1] = 0;
+  p.lo[1] = -1;
+  p.hi[1] = 30;
+  p.nwalls = 1;
+  p.wall[0] = (wg_wall){.c = 0, .A = 0, .omega = 1, .side = +1};
+  p.pw = wg_contact_linear(1.0, 0.005, 1.0);
+  p.f_b = f_b;
+  p.s_crit = s_crit;
+  p.wall_bonds = 1;
+  double rad[1] = {0.5}, u = sqrt(2 * 3 * e_cb);
+  double r[3] = {10, 0.499999, 0}, v[3] = {0, u, 0};
+  wg_td s;
+  TH_CHECK(wg_td_alloc_state(&s, &p, 1, r, v, rad, NULL, 0) == WG_OK && s.captures == 1,
+           "a ball touching the floor bonds to it");
+  wg_td_advance(&s, 0.5);
+  TH_CHECK(s.ruptures == 1, "the wall bridge breaks once");
+  TH_CLOSE("kinetic energy after the wall bridge's rupture: 1/2 m u^2 - E_cb", 0.5 * s.v[1] * s.v[1], 2 * e_cb, 1e-2, 0);
+  TH_CHECK(wg_td_ledger_residual(&s) < 1e-4, "ledger across it: residual %.2e", wg_td_ledger_residual(&s));
+  wg_td_free(&s);
+  v[1] = sqrt(e_cb);
+  TH_CHECK(wg_td_alloc_state(&s, &p, 1, r, v, rad, NULL, 0) == WG_OK, "slow ball on the floor");
+  double gap_max = 0;
+  while (s.t < 3) {
+    wg_td_advance(&s, s.t + p.dt);
+    if (s.r[1] - 0.5 > gap_max) gap_max = s.r[1] - 0.5;
+  }
+  TH_CHECK(s.ruptures == 0, "with 1/2 m u^2 = E_cb / 2 it stays bound to the floor");
+  TH_CLOSE("its largest gap: s_crit / 2", gap_max, 0.5 * s_crit, 0.02, 0);
+  wg_td_free(&s);
+}
+
+/* init = packed: a bed on the floor without overlaps, its lowest centres half the largest
+   diameter above the floor, as few layers as the lateral spacing allows. */
+static void packed_bed(void)
+{
+  const char *kv2[] = {"engine=td", "dim=2", "n=300", "lx=100", "height=9", "sigma_p=0.06",
+                       "init=packed", "tg_init_abs=0", "gamma=2", "estar_d=0.1", "seed=3",
+                       "t_end=1", NULL};
+  const char *kv3[] = {"engine=td", "dim=3", "n=300", "lx=7.5", "ly=7.5", "height=45",
+                       "sigma_p=0.02", "init=packed", "tg_init_abs=0", "gamma=2",
+                       "estar_d=0.1", "seed=3", "t_end=1", NULL};
+  const char *const *kv[2] = {kv2, kv3};
+  for (int q = 0; q < 2; q++) {
+    wg_scene sc;
+    wg_scene_init(&sc);
+    int ok = 1;
+    for (int k = 0; kv[q][k]; k++) ok &= wg_scene_set_override(&sc, kv[q][k]) == WG_OK;
+    ok &= wg_scene_finish(&sc) == WG_OK;
+    wg_td s;
+    ok &= wg_td_alloc(&s, &sc) == WG_OK;
+    TH_CHECK(ok, "packed bed, %dD: set up", q + 2);
+    if (!ok) continue;
+    double dmax = 1 + sqrt(3.0) * sc.sigma_p, zmin = 1e9, zmax = -1e9, gap_min = 1e9;
+    int up = sc.dim - 1;
+    for (long i = 0; i < s.n; i++) {
+      zmin = fmin(zmin, s.r[3 * i + up]);
+      zmax = fmax(zmax, s.r[3 * i + up]);
+    }
+    for (long k = 0; k < s.npair; k++) {
+      long i = s.pair[k].i, j = s.pair[k].j;
+      double d2 = 0;
+      for (int a = 0; a < sc.dim; a++) {
+        double d = s.r[3 * j + a] - s.r[3 * i + a];
+        if (s.par.periodic[a]) d -= s.par.box[a] * nearbyint(d / s.par.box[a]);
+        d2 += d * d;
+      }
+      gap_min = fmin(gap_min, sqrt(d2) - s.radius[i] - s.radius[j]);
+    }
+    /* lateral spacing a = L / floor(L / dmax); neighbouring rows touch: 2D, 90 per row,
+       4 rows, steps sqrt(dmax^2 - a^2/4); 3D, 7 x 7 per layer, 7 layers, steps
+       sqrt(dmax^2 - a^2/2) */
+    double a = q == 0 ? 100.0 / 90 : 7.5 / 7;
+    double top = 0.5 * dmax + (q == 0 ? 3 * sqrt(dmax * dmax - a * a / 4) : 6 * sqrt(dmax * dmax - a * a / 2));
+    TH_CHECK(gap_min >= 0 && s.contacts == 0, "packed bed, %dD: no overlaps (smallest gap %.3g)", q + 2, gap_min);
+    TH_CLOSE("packed bed: lowest centres at half the largest diameter", zmin, 0.5 * dmax, 1e-9, 0);
+    TH_CLOSE("packed bed: top layer where the count of layers puts it", zmax, top, 1e-5, 0);
+    wg_td_free(&s);
+  }
+}
+
 int main(void)
 {
   linear_contact();
@@ -264,5 +350,7 @@ int main(void)
   capillary_pair();
   ledger_convergence();
   scene_laws();
+  wall_bridge();
+  packed_bed();
   return th_summary();
 }
