@@ -796,10 +796,33 @@ int wg_ed_start(wg_ed *s, double t0)
   return WG_OK;
 }
 
+/* With init_from: the bridges of the run file's last snapshot (slots are identities until
+   wg_ed_start renumbers them). */
+static int restore_bonds(wg_ed *s, const wg_scene *sc)
+{
+  int32_t *pairs;
+  long nb;
+  int st = wg_init_bonds(sc, &pairs, &nb);
+  if (st != WG_OK || !nb) return st;
+  if (!s->wet) st = wg_error(WG_EINVAL, sc->init_from, "init_from: bridges in the run file, but this scene is dry");
+  for (long k = 0; st == WG_OK && k < nb; k++) {
+    int32_t i = pairs[2 * k], j = pairs[2 * k + 1];
+    if (s->nbond[i] >= s->bond_cap || s->nbond[j] >= s->bond_cap) {
+      st = wg_error(WG_EINVAL, sc->init_from, "init_from: particle with more than %d bridges", s->bond_cap);
+      break;
+    }
+    s->bond[(size_t)i * s->bond_cap + s->nbond[i]++] = j;
+    s->bond[(size_t)j * s->bond_cap + s->nbond[j]++] = i;
+  }
+  free(pairs);
+  return st;
+}
+
 int wg_ed_alloc(wg_ed *s, const wg_scene *sc)
 {
   int st = setup_common(s, sc, sc->n);
   if (st == WG_OK) st = wg_init_state(sc, s->p, s->mass);
+  if (st == WG_OK && sc->init_from[0]) st = restore_bonds(s, sc);
   if (st == WG_OK) st = wg_ed_start(s, 0.0);
   if (st != WG_OK) wg_ed_free(s);
   return st;

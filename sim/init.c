@@ -1,4 +1,8 @@
 #include "init.h"
+#include "io_h5.h"
+
+#include <stdlib.h>
+#include <string.h>
 
 #include <gsl/gsl_randist.h>
 #include <gsl/gsl_rng.h>
@@ -65,8 +69,102 @@ static int packed_bed(const wg_scene *sc, double dmax, wg_particle *p)
   return WG_OK;
 }
 
+/* A number stored as text in the /parameters group of a run file. */
+static int parameter(hid_t f, const char *path, const char *key, double *value)
+{
+  char buf[64];
+  if (wg_h5_read_attr_string(f, "/parameters", key, buf, sizeof buf) != WG_OK) return WG_EIO;
+  char *end;
+  *value = strtod(buf, &end);
+  if (end == buf) return wg_error(WG_EIO, path, "/parameters: '%s' is not a number", key);
+  return WG_OK;
+}
+
+static int state_from_run(const wg_scene *sc, wg_particle *p, double *mass)
+{
+  const char *path = sc->init_from;
+  int dim = sc->dim, up = dim - 1, rank, st;
+  long n = sc->n;
+  hsize_t dims[8];
+  hid_t f = wg_h5_open_read(path);
+  if (f < 0) return WG_EIO;
+  st = wg_h5_dims(f, "/particles/all/position/value", &rank, dims);
+  if (st == WG_OK && (rank != 3 || dims[0] < 1 || (long)dims[1] != n || (int)dims[2] != dim))
+    st = wg_error(WG_EINVAL, path, "init_from: the last snapshot must hold %ld particles in %dD", n, dim);
+  hsize_t last = st == WG_OK ? dims[0] - 1 : 0;
+  double *buf = malloc(sizeof *buf * (size_t)n * 3), *t = malloc(sizeof *t * (last + 1));
+  double edges[3] = {0, 0, 0}, amp = 0, omega = 0;
+  if (st == WG_OK && (!buf || !t)) st = wg_error(WG_ENOMEM, path, "init_from: no memory");
+  if (st == WG_OK) st = wg_h5_read(f, "/particles/all/position/time", H5T_NATIVE_DOUBLE, t);
+  if (st == WG_OK) st = wg_h5_read(f, "/particles/all/box/edges", H5T_NATIVE_DOUBLE, edges);
+  if (st == WG_OK) st = parameter(f, path, "amplitude", &amp);
+  if (st == WG_OK) st = parameter(f, path, "omega", &omega);
+  double len[2] = {sc->lx, sc->ly};
+  for (int k = 0; st == WG_OK && k < up; k++)
+    if (fabs(edges[k] - len[k]) > 1e-9 * len[k])
+      st = wg_error(WG_EINVAL, path, "init_from: its box is %g d along axis %d, the scene's %g d", edges[k], k, len[k]);
+  double shift = amp * sin(omega * t[last]); /* the old floor's position then */
+  if (st == WG_OK) st = wg_h5_read_rows(f, "/particles/all/position/value", H5T_NATIVE_DOUBLE, last, 1, buf);
+  for (long i = 0; st == WG_OK && i < n; i++)
+    for (int k = 0; k < dim; k++) p[i].r[k] = buf[dim * i + k] - (k == up ? shift : 0);
+  if (st == WG_OK) st = wg_h5_read_rows(f, "/particles/all/velocity/value", H5T_NATIVE_DOUBLE, last, 1, buf);
+  for (long i = 0; st == WG_OK && i < n; i++)
+    for (int k = 0; k < dim; k++) p[i].v[k] = buf[dim * i + k];
+  if (st == WG_OK) st = wg_h5_read(f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, buf);
+  for (long i = 0; st == WG_OK && i < n; i++) {
+    p[i].radius = 0.5 * buf[i];
+    p[i].t = 0;
+    if (sc->container == WG_CONTAINER_SHAKER &&
+        (p[i].r[up] < 0.5 * p[i].radius || p[i].r[up] > sc->height - 0.5 * p[i].radius))
+      st = wg_error(WG_EINVAL, path, "init_from: particle %ld (z = %g) is outside the container "
+                    "(height %g)", i, p[i].r[up], sc->height);
+  }
+  if (st == WG_OK && mass) st = wg_h5_read(f, "/particles/all/mass", H5T_NATIVE_DOUBLE, mass);
+  free(buf);
+  free(t);
+  wg_h5_close(f);
+  return st;
+}
+
+int wg_init_bonds(const wg_scene *sc, int32_t **pairs, long *n_pairs)
+{
+  const char *path = sc->init_from;
+  *pairs = NULL;
+  *n_pairs = 0;
+  hid_t f = wg_h5_open_read(path);
+  if (f < 0) return WG_EIO;
+  int rank, st = WG_OK;
+  hsize_t dims[8];
+  if (!wg_h5_exists(f, "/bridges/offset")) {
+    wg_h5_close(f);
+    return WG_OK;
+  }
+  st = wg_h5_dims(f, "/bridges/offset", &rank, dims);
+  hsize_t frames = st == WG_OK && dims[0] > 0 ? dims[0] - 1 : 0;
+  long long off[2] = {0, 0};
+  if (st == WG_OK && frames > 0)
+    st = wg_h5_read_rows(f, "/bridges/offset", H5T_NATIVE_LLONG, frames - 1, 2, off);
+  long nb = (long)(off[1] - off[0]);
+  if (st == WG_OK && nb > 0) {
+    *pairs = malloc(sizeof **pairs * 2 * (size_t)nb);
+    if (!*pairs) st = wg_error(WG_ENOMEM, path, "init_from: no memory for %ld bridges", nb);
+    if (st == WG_OK)
+      st = wg_h5_read_rows(f, "/bridges/pairs", H5T_NATIVE_INT32, (hsize_t)off[0], (hsize_t)nb, *pairs);
+    for (long k = 0; st == WG_OK && k < 2 * nb; k++)
+      if ((*pairs)[k] < 0 || (*pairs)[k] >= sc->n) st = wg_error(WG_EIO, path, "init_from: bridge partner out of range");
+    if (st == WG_OK) *n_pairs = nb;
+  }
+  wg_h5_close(f);
+  if (st != WG_OK) {
+    free(*pairs);
+    *pairs = NULL;
+  }
+  return st;
+}
+
 int wg_init_state(const wg_scene *sc, wg_particle *p, double *mass)
 {
+  if (sc->init_from[0]) return state_from_run(sc, p, mass);
   int dim = sc->dim, up = dim - 1;
   long n = sc->n;
   double half_width = sqrt(3.0) * sc->sigma_p;

@@ -36,13 +36,13 @@
 
 static const double pi = 3.14159265358979323846;
 
-typedef enum { T_DOUBLE, T_LONG, T_INT, T_ENUM, T_SEED } key_type;
+typedef enum { T_DOUBLE, T_LONG, T_INT, T_ENUM, T_SEED, T_PATH } key_type;
 /* DEF_VALUE: fixed default; DEF_REQUIRED: must be given; DEF_COND: required or computed
    depending on other keys (finish() decides; dflt_text says how). */
 typedef enum { DEF_VALUE, DEF_REQUIRED, DEF_COND } def_kind;
 enum { MIN_EXCL = 1, MAX_EXCL = 2 };
 /* Groups of mutually exclusive alternatives: keys of one group with different alt conflict. */
-enum { G_NONE, G_BRIDGE, G_ESTAR, G_TG, G_BOX };
+enum { G_NONE, G_BRIDGE, G_ESTAR, G_TG, G_BOX, G_INIT };
 enum { ONLY_ED = 1, ONLY_TD = 2 };
 
 typedef struct {
@@ -64,7 +64,7 @@ typedef struct {
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
-  K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
+  K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
   K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, NKEYS
@@ -154,7 +154,11 @@ static const key_desc keys[NKEYS] = {
                      G_TG, 1},
   [K_INIT] = {"init", T_ENUM, OFF(init_packing), 0, 1, 0, DEF_VALUE, 0, NULL, "",
               "initial positions: a lattice filling the container, or a packed bed on the "
-              "floor (hexagonal rows / stacked square layers)", init_words, 0, 0},
+              "floor (hexagonal rows / stacked square layers)", init_words, G_INIT, 0},
+  [K_INIT_FROM] = {"init_from", T_PATH, OFF(init_from), 0, 0, 0, DEF_VALUE, 0, NULL, "",
+                   "run file whose last snapshot, with its bridges, starts this run (a scan "
+                   "continued from the previous point; the scene file's init, tg_init and "
+                   "tg_init_abs are then not used); empty = none", NULL, G_INIT, 1},
   [K_SEED] = {"seed", T_SEED, OFF(seed), 0, 0, 0, DEF_REQUIRED, 0, NULL, "",
               "seed of the random number generator (unsigned 64-bit)", NULL, 0, 0},
   [K_T_END] = {"t_end", T_DOUBLE, OFF(t_end), 0, INF, MIN_EXCL | MAX_EXCL, DEF_REQUIRED, 0,
@@ -218,6 +222,7 @@ typedef union {
   long l;
   int i;
   unsigned long long u;
+  const char *s; /* T_PATH: the text, copied by store() */
 } key_value;
 
 /* ------------------------------------------------------------------ field access */
@@ -233,6 +238,7 @@ static void store(wg_scene *sc, int k, key_value v)
   case T_INT:
   case T_ENUM: *(int *)field(sc, k) = v.i; break;
   case T_SEED: *(unsigned long long *)field(sc, k) = v.u; break;
+  case T_PATH: snprintf((char *)field(sc, k), sizeof sc->init_from, "%s", v.s ? v.s : ""); break;
   }
 }
 
@@ -247,6 +253,7 @@ static void reset_key(wg_scene *sc, int k)
   case T_INT:
   case T_ENUM: v.i = (int)d; break;
   case T_SEED: v.u = 0; break;
+  case T_PATH: v.s = ""; break;
   }
   store(sc, k, v);
   sc->key_line[k] = 0;
@@ -493,6 +500,12 @@ static int parse_value(int k, const char *text, const char *loc, key_value *v)
   case T_INT: return parse_integer(&keys[k], text, loc, v);
   case T_ENUM: return parse_enum(&keys[k], text, loc, v);
   case T_SEED: return parse_seed(&keys[k], text, loc, v);
+  case T_PATH:
+    if (strlen(text) >= sizeof(((wg_scene *)0)->init_from))
+      return parse_error(loc, keys[k].name, "path longer than %zu characters",
+                         sizeof(((wg_scene *)0)->init_from) - 1);
+    v->s = text;
+    return WG_OK;
   }
   return WG_EINVAL;
 }
@@ -866,6 +879,14 @@ static int resolve_driving(wg_scene *sc)
 
 static int resolve_temperature(wg_scene *sc)
 {
+  if (sc->init_from[0]) { /* an initial temperature in the scene file is not used */
+    int k = sc->key_line[K_TG_INIT] == LINE_CMD       ? K_TG_INIT
+            : sc->key_line[K_TG_INIT_ABS] == LINE_CMD ? K_TG_INIT_ABS : -1;
+    if (k >= 0)
+      return pair_error(sc, k, K_INIT_FROM, "the velocities come from the run file");
+    sc->tg_init = sc->tg_init_abs = 0;
+    return WG_OK;
+  }
   if (given(sc, K_TG_INIT) && given(sc, K_TG_INIT_ABS))
     return pair_error(sc, K_TG_INIT, K_TG_INIT_ABS, "give only one of tg_init, tg_init_abs");
   if (sc->e_cb == 0) {
@@ -890,6 +911,8 @@ static int check_fill(const wg_scene *sc)
 {
   if (sc->init_packing && sc->container != WG_CONTAINER_SHAKER)
     return pair_error(sc, K_INIT, K_CONTAINER, "a packed bed needs container = shaker");
+  if (sc->init_from[0] && given(sc, K_INIT))
+    return pair_error(sc, K_INIT, K_INIT_FROM, "give either init or init_from");
   return WG_OK;
 }
 
@@ -942,6 +965,7 @@ static void format_value(const wg_scene *sc, int k, char *buf, size_t size)
   case T_INT: snprintf(buf, size, "%d", *(const int *)p); break;
   case T_ENUM: snprintf(buf, size, "%s", keys[k].words[*(const int *)p]); break;
   case T_SEED: snprintf(buf, size, "%llu", *(const unsigned long long *)p); break;
+  case T_PATH: snprintf(buf, size, "%s", (const char *)p); break;
   }
 }
 
@@ -958,6 +982,7 @@ static void format_allowed(int k, char *buf, size_t size)
 {
   if (keys[k].type == T_ENUM) format_words(keys[k].words, buf, size);
   else if (keys[k].type == T_SEED) snprintf(buf, size, "[0, 2^64)");
+  else if (keys[k].type == T_PATH) snprintf(buf, size, "a file");
   else format_range(&keys[k], buf, size);
 }
 
@@ -988,7 +1013,7 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user)
     {"dt", sc->dt, "sqrt(d/g)", "derived: time step t_contact / steps_per_contact"},
     {"hertz_k", sc->hertz_k, "m g / d^2", "derived: Hertz K of Eq. 2.7 for contact time t_contact at speed 1"},
   };
-  char buf[64];
+  char buf[1100];
   int rc, only = sc->engine == WG_ENGINE_TD ? ONLY_TD : ONLY_ED;
   for (int k = 0; k < NKEYS; k++) {
     if (keys[k].only && keys[k].only != only) continue; /* the other engine's keys */

@@ -276,6 +276,26 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
   return WG_OK;
 }
 
+int wg_td_set_bonds(wg_td *s, const int32_t *pairs, long nb)
+{
+  if (s->par.f_b <= 0) return wg_error(WG_EINVAL, "td", "bridges given, but the scene is dry");
+  qsort(s->pair, (size_t)s->npair, sizeof *s->pair, cmp_pair); /* a fixed order, searchable */
+  for (long k = 0; k < nb; k++) {
+    wg_td_pair q = {.i = pairs[2 * k] < pairs[2 * k + 1] ? pairs[2 * k] : pairs[2 * k + 1],
+                    .j = pairs[2 * k] < pairs[2 * k + 1] ? pairs[2 * k + 1] : pairs[2 * k]};
+    wg_td_pair *found = bsearch(&q, s->pair, (size_t)s->npair, sizeof *s->pair, cmp_pair);
+    if (!found)
+      return wg_error(WG_EINVAL, "td", "bridge %d-%d: the pair is not within reach of a bridge", q.i, q.j);
+    found->bonded = 1;
+  }
+  forces(s, s->v);
+  double k, u;
+  wg_td_energy(s, &k, &u);
+  s->e0 = k + u;
+  memset(&s->dissipated_rupt, 0, sizeof s->dissipated_rupt);
+  return WG_OK;
+}
+
 void wg_td_free(wg_td *s)
 {
   free(s->r);
@@ -429,6 +449,14 @@ int wg_td_alloc(wg_td *s, const wg_scene *sc)
       rad[i] = q[i].radius;
     }
     st = wg_td_alloc_state(s, &p, n, r, v, rad, mass, 0);
+  }
+  if (st == WG_OK && sc->init_from[0]) {
+    int32_t *pairs;
+    long nb;
+    st = wg_init_bonds(sc, &pairs, &nb);
+    if (st == WG_OK && nb) st = wg_td_set_bonds(s, pairs, nb);
+    free(pairs);
+    if (st != WG_OK) wg_td_free(s);
   }
   free(q);
   free(mass);

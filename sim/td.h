@@ -85,6 +85,11 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
                       const double *v, const double *radius, const double *mass, double t0);
 void wg_td_free(wg_td *s);
 
+/* Bond the listed pairs (ids, two per pair; each must be in the neighbour list, i.e. within
+   reach of a bridge) and recompute forces and the ledger's E(0): a run continued from
+   another's last snapshot. */
+int wg_td_set_bonds(wg_td *s, const int32_t *pairs, long nb);
+
 /* Advance by whole steps of dt until t >= t_stop (to within dt / 2). */
 int wg_td_advance(wg_td *s, double t_stop);
 

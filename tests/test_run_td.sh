@@ -61,6 +61,26 @@ check "wall bridges in a dry scene are refused" bash -c "[ $rc -ne 0 ] && grep -
 check "a packed bed in a periodic box is refused" bash -c "[ $rc -ne 0 ] && grep -q \"'init'.*container = shaker\" '$tmp/e6'"
 check "no run file written by refused scenes" test ! -e "$tmp/x.h5"
 
+# init_from: a run continued from another's last snapshot keeps its velocities and bridges
+# (both engines); the positions are moved with the floor, so the potential energy may differ
+cont="n=300 lx=100 t_end=5 profile_bins=0 profile_start=0 dt_checkpoint=0"
+for eng in ed td; do
+  extra=; [ $eng = td ] && extra="engine=td tc="
+  mkdir -p "$tmp/k$eng"
+  "$run" "$scenes/shake2d.ini" $extra $cont -q -o "$tmp/k$eng/a.h5" 2>/dev/null
+  "$run" "$scenes/shake2d.ini" $extra $cont init_from="$tmp/k$eng/a.h5" -q -o "$tmp/k$eng/b.h5" 2>/dev/null; rc=$?
+  a=$("$series" "$tmp/k$eng/a.h5" kinetic_energy bridges | tail -n 1 | cut -f 2-)
+  b=$("$series" "$tmp/k$eng/b.h5" kinetic_energy bridges | sed -n 2p | cut -f 2-)
+  check "init_from ($eng): the continued run starts with the first one's kinetic energy and bridges ($b vs $a)" \
+    bash -c "[ $rc -eq 0 ] && [ '$a' = '$b' ] && [ \$(echo '$a' | cut -f 2) -gt 0 ]"
+done
+"$run" "$scenes/shake2d.ini" $cont n=200 init_from="$tmp/ked/a.h5" -o "$tmp/x.h5" 2> "$tmp/e7"; rc=$?
+check "init_from with another particle number is refused, naming the file" bash -c "[ $rc -ne 0 ] && grep -q 'ked/a.h5.*init_from.*200 particles' '$tmp/e7'"
+"$run" "$scenes/shake2d.ini" $cont tg_init=5 init_from="$tmp/ked/a.h5" -o "$tmp/x.h5" 2> "$tmp/e8"; rc=$?
+check "init_from with tg_init on the command line is refused (the velocities come from the file)" bash -c "[ $rc -ne 0 ] && grep -q \"'tg_init' and 'init_from'\" '$tmp/e8'"
+"$run" "$scenes/shake2d.ini" $cont init_from="$tmp/none.h5" -o "$tmp/x.h5" 2> "$tmp/e9"; rc=$?
+check "init_from a missing file is refused, naming it" bash -c "[ $rc -ne 0 ] && grep -q 'none.h5' '$tmp/e9'"
+
 # Willett's law: s_crit from Eq. 2.10 (V = 0.001 d^3, R = d/2: s_crit = 0.102 d) and
 # E_cb = F_B s_crit times the mean of Eq. 2.9's profile
 mkdir -p "$tmp/w"
