@@ -44,4 +44,31 @@ echo "== exact wall solver against the brute-force scan at T_driv/1000 (same tra
 "$benchdir/bench_wall" | tee "$out/bench_wall.tsv"
 echo "== time-driven engine: particle-steps/s of a 3D bed of 1e4 spheres; cost against event-driven for one state"
 "$benchdir/bench_td" | tee "$out/bench_td.tsv"
-echo "results: $tsv, $out/bench_wall.tsv, $out/bench_td.tsv"
+
+echo "== time-driven 2D shaker: accuracy against cost for the time step dt = t_contact / k"
+# A dry shaken bed (150 disks, eps = 0.8, Gamma = 10, E*_d = 4.5; tests/test_run_td.sh compares
+# it with the event-driven engine), three seeds: the energy ledger's residual, the mean T_g
+# over t = 20..60 (mean of the seeds, error from their spread) against the finest step
+# (k = 400) and against the event-driven engine (hard disks, the t_contact -> 0 limit), and the
+# cost per time unit.
+bed="n=150 lx=50 eps=0.8 t_end=60 dt_series=0.5 dt_checkpoint=0 profile_bins=0 profile_start=30 dt_snapshot=0"
+seeds="5 6 7"
+tgmean() { "$bindir/wetgran-series" "$1" temperature | awk -F'\t' 'NR > 1 && $1 > 20 { s += $2; n++ } END { printf "%.6g\n", s / n }'; }
+# mean and standard error over the seeds of: wetgran-run SCENE ARGS (prints "tg err")
+seedmean() { for sd in $seeds; do "$bindir/wetgran-run" "$@" seed=$sd -q -o "$tmp/s.h5" 2> "$tmp/err.$sd"; tgmean "$tmp/s.h5"; done |
+  awk '{ s += $1; s2 += $1 * $1; n++ } END { m = s / n; printf "%.6g\t%.3g\n", m, sqrt((s2 / n - m * m) / (n - 1)) }'; }
+ed=$(seedmean "$scenes/shake2d_dry.ini" $bed)
+shaker=$out/bench_td_shaker.tsv
+echo -e "k\tdt\twall_s_per_time_unit\tparticle_steps_per_s\tledger_residual\ttg\ttg_err\ttg_rel_dev_k400\ttg_rel_dev_ed" > "$tmp/rows"
+for k in 400 200 100 50 25 12.5; do
+  tg=$(seedmean "$scenes/shake2d_dry.ini" $bed engine=td tc= steps_per_contact=$k)
+  [ "$k" = 400 ] && ref=${tg%%$'\t'*}
+  cat "$tmp"/err.* | grep '^summary:' | awk -v k=$k -v tg="$tg" -v ref=$ref -v ed="${ed%%$'\t'*}" '{
+    for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] += kv[2] } n++ }
+    END { split(tg, t, "\t")
+    printf "%s\t%.4g\t%.4g\t%.4g\t%.3g\t%.5g\t%.3g\t%+.4f\t%+.4f\n", k, 0.005 / k, v["wall_s"] / n / 60, v["particle_steps_per_s"] / n,
+      v["ledger_residual"] / n, t[1], t[2], t[1] / ref - 1, t[1] / ed - 1 }' >> "$tmp/rows"
+done
+{ echo "# event-driven reference (3 seeds): T_g = ${ed%%$'\t'*} +- ${ed#*$'\t'}"; cat "$tmp/rows"; } | tee "$shaker"
+gnuplot -e "tsv='$shaker'; png='$out/bench_td_shaker.png'" "$here/td_shaker.gp" && echo "plot: $out/bench_td_shaker.png"
+echo "results: $tsv, $out/bench_wall.tsv, $out/bench_td.tsv, $shaker"
