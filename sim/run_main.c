@@ -13,9 +13,11 @@ static void usage(FILE *out)
           "Usage: wetgran-run SCENE [key=value ...] -o RUN.h5 [options]\n"
           "       wetgran-run key=value ... -o RUN.h5          (no scene file)\n"
           "\n"
-          "Simulates wet (or dry) granular matter with the event-driven engine: hard disks or\n"
-          "spheres, thin-thread capillary bridges, a container shaken as A sin(w t) or a\n"
-          "periodic box.  Units: d = m = g = 1.  key=value pairs override the scene file.\n"
+          "Simulates wet (or dry) granular matter in a container shaken as A sin(w t) or a\n"
+          "periodic box, with one of two engines (key 'engine'): event-driven (ed: hard disks\n"
+          "or spheres, thin-thread capillary bridges) or time-driven (td: soft disks or\n"
+          "spheres, linear or Hertz contacts, the minimal capillary model; keys marked [td]).\n"
+          "Units: d = m = g = 1.  key=value pairs override the scene file.\n"
           "Writes an H5MD run file under RUN.h5.tmp and renames it when complete; checkpoints\n"
           "go to RUN.h5.ckpt and an interrupted run resumes from there when restarted.\n"
           "\n"
@@ -32,6 +34,7 @@ static void usage(FILE *out)
           "\n"
           "At the end one line on stderr:\n"
           "  summary: events=N sim_time=T wall_s=S events_per_s=R ledger_residual=X ...\n"
+          "  summary: engine=td steps=N events=N sim_time=T wall_s=S particle_steps_per_s=R ...\n"
           "\n");
   wg_scene_print_keys(out);
 }
