@@ -4,7 +4,9 @@
    chi^2, i.e. from the scatter of the data).
      critical:  y = a (xc - x)^beta  for x < xc   (order parameter near a transition, Fig. 3.31)
      line:      y = a + b x                       (transition energies against E_cb, Fig. 3.5)
-     prop:      y = b x                           (the same through the origin: gsl_fit_mul) */
+     prop:      y = b x                           (the same through the origin: gsl_fit_mul)
+     melt:      y = l0 ln(1 / (1 - (x - xm)/(xc - xm)))  for xm < x < xc, 0 below xm, capped
+                at C (the number of layers) and C from xc on (fluidization depth, Fig. 4.4) */
 #include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fit.h>
@@ -23,6 +25,7 @@
 typedef struct data {
   size_t n;
   double *x, *y;
+  double cap; /* melt: the largest value the model takes */
 } data;
 
 /* critical: p = (a, xc, beta) */
@@ -69,6 +72,79 @@ static int line_df(const gsl_vector *p, void *d_, gsl_matrix *J)
     gsl_matrix_set(J, i, 1, d->x[i]);
   }
   return GSL_SUCCESS;
+}
+
+/* melt: p = (l0, xm, xc).  With u = (x - xm)/(xc - xm), ln(1/(1 - u)) = ln(xc - xm) - ln(xc - x),
+   so the derivatives are closed forms; below xm and where the cap holds they vanish. */
+static double melt_model(double l0, double xm, double xc, double cap, double x, int *capped)
+{
+  *capped = 1;
+  if (x <= xm) return 0;
+  if (x >= xc || xc <= xm) return cap;
+  double y = l0 * (log(xc - xm) - log(xc - x));
+  if (y >= cap) return cap;
+  *capped = 0;
+  return y;
+}
+
+static int melt_f(const gsl_vector *p, void *d_, gsl_vector *r)
+{
+  const data *d = d_;
+  double l0 = gsl_vector_get(p, 0), xm = gsl_vector_get(p, 1), xc = gsl_vector_get(p, 2);
+  int capped;
+  for (size_t i = 0; i < d->n; i++)
+    gsl_vector_set(r, i, melt_model(l0, xm, xc, d->cap, d->x[i], &capped) - d->y[i]);
+  return GSL_SUCCESS;
+}
+
+static int melt_df(const gsl_vector *p, void *d_, gsl_matrix *J)
+{
+  const data *d = d_;
+  double l0 = gsl_vector_get(p, 0), xm = gsl_vector_get(p, 1), xc = gsl_vector_get(p, 2);
+  for (size_t i = 0; i < d->n; i++) {
+    int capped;
+    double x = d->x[i];
+    melt_model(l0, xm, xc, d->cap, x, &capped);
+    int live = !capped; /* x > xm, below the cap */
+    gsl_matrix_set(J, i, 0, live ? log(xc - xm) - log(xc - x) : 0);
+    gsl_matrix_set(J, i, 1, live ? -l0 / (xc - xm) : 0);
+    gsl_matrix_set(J, i, 2, live ? l0 * (1 / (xc - xm) - 1 / (xc - x)) : 0);
+  }
+  return GSL_SUCCESS;
+}
+
+/* melt's start: the least sum of squares on a grid of xm, xc (over and beyond the range of x)
+   and l0 (0.02 to 20, logarithmic); the model is piecewise, so a local fit needs a start in the
+   right piece. */
+static void melt_start(const data *d, double start[3])
+{
+  double xlo = d->x[0], xhi = d->x[0], best = INFINITY;
+  for (size_t i = 0; i < d->n; i++) {
+    if (d->x[i] < xlo) xlo = d->x[i];
+    if (d->x[i] > xhi) xhi = d->x[i];
+  }
+  double span = xhi - xlo > 0 ? xhi - xlo : 1;
+  const int nx = 80, nl = 60;
+  for (int a = 0; a <= nx; a++) {
+    double xm = xlo - 0.25 * span + 1.25 * span * a / nx;
+    for (int b = 1; b <= nx; b++) {
+      double xc = xm + 1.5 * span * b / nx;
+      for (int c = 0; c < nl; c++) {
+        double l0 = 0.02 * pow(1000.0, (double)c / (nl - 1)), s = 0;
+        int capped;
+        for (size_t i = 0; i < d->n && s < best; i++) {
+          double r = melt_model(l0, xm, xc, d->cap, d->x[i], &capped) - d->y[i];
+          s += r * r;
+        }
+        if (s < best) {
+          best = s;
+          start[0] = l0;
+          start[1] = xm;
+          start[2] = xc;
+        }
+      }
+    }
+  }
 }
 
 /* Reads columns xname, yname of a TSV (header line; '#' lines skipped), keeping rows with
@@ -138,21 +214,25 @@ static int read_table(const char *path, const char *xname, const char *yname, do
 static void usage(FILE *out)
 {
   fprintf(out,
-          "Usage: wetgran-fit --model critical|line|prop --x COL --y COL [--xmin X] [--xmax X]\n"
-          "                   [--prefix P] [--guess a,xc,beta] TABLE|-\n"
+          "Usage: wetgran-fit --model critical|line|prop|melt --x COL --y COL [--xmin X]\n"
+          "                   [--xmax X] [--prefix P] [--guess a,xc,beta] [--cap C] TABLE|-\n"
           "Least-squares fit (GSL trust-region Levenberg-Marquardt) of column y against x:\n"
           "  critical  y = a (xc - x)^beta for x < xc, 0 beyond (Fig. 3.31)\n"
           "  line      y = a + b x (Fig. 3.5)\n"
           "  prop      y = b x, a line through the origin (Fig. 3.5: E* as a slope)\n"
-          "Prints 'key value error' rows: P_a, P_xc, P_beta (or P_a, P_b; or P_b), P_n\n"
-          "(points) and\n"
+          "  melt      y = l0 ln(1 / (1 - (x - xm) / (xc - xm))) for xm < x < xc, 0 for x <= xm,\n"
+          "            never above C (--cap; default the largest y) and C for x >= xc: the\n"
+          "            fluidization depth of Fig. 4.4, C the number of layers; started from\n"
+          "            the best point of a grid in (l0, xm, xc) unless --guess l0,xm,xc\n"
+          "Prints 'key value error' rows: P_a, P_xc, P_beta (or P_a, P_b; or P_b; or P_l0,\n"
+          "P_xm, P_xc), P_n (points) and\n"
           "P_chi2_dof; errors are the covariance errors scaled by sqrt(chi^2/dof).\n");
 }
 
 int main(int argc, char **argv)
 {
   const char *model = NULL, *xname = NULL, *yname = NULL, *path = NULL, *prefix = "fit";
-  double xmin = -INFINITY, xmax = INFINITY, guess[3] = {NAN, NAN, NAN};
+  double xmin = -INFINITY, xmax = INFINITY, guess[3] = {NAN, NAN, NAN}, cap = NAN;
   for (int a = 1; a < argc; a++) {
     const char *o = argv[a];
     if (!strcmp(o, "-h") || !strcmp(o, "--help")) {
@@ -165,6 +245,7 @@ int main(int argc, char **argv)
     else if (a + 1 < argc && !strcmp(o, "--xmin")) xmin = atof(argv[++a]);
     else if (a + 1 < argc && !strcmp(o, "--xmax")) xmax = atof(argv[++a]);
     else if (a + 1 < argc && !strcmp(o, "--prefix")) prefix = argv[++a];
+    else if (a + 1 < argc && !strcmp(o, "--cap")) cap = atof(argv[++a]);
     else if (a + 1 < argc && !strcmp(o, "--guess"))
       sscanf(argv[++a], "%lf,%lf,%lf", &guess[0], &guess[1], &guess[2]);
     else if (o[0] == '-' && o[1]) {
@@ -173,8 +254,8 @@ int main(int argc, char **argv)
     } else path = o;
   }
   int critical = model && !strcmp(model, "critical"), linear = model && !strcmp(model, "line");
-  int prop = model && !strcmp(model, "prop");
-  if ((!critical && !linear && !prop) || !xname || !yname || !path) {
+  int prop = model && !strcmp(model, "prop"), melt = model && !strcmp(model, "melt");
+  if ((!critical && !linear && !prop && !melt) || !xname || !yname || !path) {
     usage(stderr);
     return 2;
   }
@@ -193,7 +274,7 @@ int main(int argc, char **argv)
     free(d.y);
     return 0;
   }
-  size_t p = critical ? 3 : 2;
+  size_t p = critical || melt ? 3 : 2;
   if (d.n <= p) {
     fprintf(stderr, "wetgran-fit: %s: %zu usable points, need more than %zu\n", path, d.n, p);
     return 1;
@@ -208,12 +289,21 @@ int main(int argc, char **argv)
     start[0] = isfinite(guess[0]) ? guess[0] : ymax;
     start[1] = isfinite(guess[1]) ? guess[1] : xhi * 1.05;
     start[2] = isfinite(guess[2]) ? guess[2] : 0.5;
+  } else if (melt) {
+    d.cap = cap;
+    if (!isfinite(cap))
+      for (size_t i = 0; i < d.n; i++)
+        if (i == 0 || d.y[i] > d.cap) d.cap = d.y[i];
+    if (isfinite(guess[0]) && isfinite(guess[1]) && isfinite(guess[2]))
+      for (int k = 0; k < 3; k++) start[k] = guess[k];
+    else melt_start(&d, start);
   } else {
     start[0] = 0;
     start[1] = 0;
   }
   gsl_set_error_handler_off();
-  gsl_multifit_nlinear_fdf fdf = {critical ? critical_f : line_f, critical ? critical_df : line_df,
+  gsl_multifit_nlinear_fdf fdf = {critical ? critical_f : melt ? melt_f : line_f,
+                                  critical ? critical_df : melt ? melt_df : line_df,
                                   NULL, d.n, p, &d, 0, 0, 0};
   gsl_multifit_nlinear_parameters fp = gsl_multifit_nlinear_default_parameters();
   gsl_multifit_nlinear_workspace *w =
@@ -228,12 +318,13 @@ int main(int argc, char **argv)
   double chi2;
   gsl_blas_ddot(gsl_multifit_nlinear_residual(w), gsl_multifit_nlinear_residual(w), &chi2);
   double dof = (double)(d.n - p), scale = sqrt(chi2 / dof > 0 ? chi2 / dof : 0);
-  const char *names[2][3] = {{"a", "b", ""}, {"a", "xc", "beta"}};
+  const char *names[3][3] = {{"a", "b", ""}, {"a", "xc", "beta"}, {"l0", "xm", "xc"}};
+  int kind = melt ? 2 : critical;
   if (st != GSL_SUCCESS)
     fprintf(stderr, "wetgran-fit: %s: the fit did not converge (%s)\n", path, gsl_strerror(st));
   printf("key\tvalue\terror\n");
   for (size_t k = 0; k < p; k++)
-    printf("%s_%s\t%.6g\t%.3g\n", prefix, names[critical][k], gsl_vector_get(w->x, k),
+    printf("%s_%s\t%.6g\t%.3g\n", prefix, names[kind][k], gsl_vector_get(w->x, k),
            scale * sqrt(gsl_matrix_get(cov, k, k)));
   printf("%s_n\t%zu\tnan\n%s_chi2_dof\t%.4g\tnan\n", prefix, d.n, prefix, chi2 / dof);
   gsl_matrix_free(cov);
