@@ -386,6 +386,11 @@ static int ckpt_write_td(wg_run *run, hid_t f)
   st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, s->v, "sqrt(g d)", "velocities");
   st |= wg_h5_write(f, "state/f", H5T_NATIVE_DOUBLE, 2, d2, s->f, "m g", "forces");
   st |= wg_h5_write(f, "state/r_built", H5T_NATIVE_DOUBLE, 2, d2, s->r_built, "d", "positions at the last list build");
+  if (s->gear) {
+    hsize_t dg[2] = {(hsize_t)n, 12};
+    st |= wg_h5_write(f, "state/gear", H5T_NATIVE_DOUBLE, 2, dg, s->gear, "d",
+                      "Gear's scaled derivatives dt^k/k! d^k r/dt^k, k = 2..5, per axis");
+  }
   st |= wg_h5_write(f, "state/radius", H5T_NATIVE_DOUBLE, 1, d1, s->radius, "d", "radii");
   if (s->mass) st |= wg_h5_write(f, "state/mass", H5T_NATIVE_DOUBLE, 1, d1, s->mass, "m", "masses");
   st |= wg_h5_write(f, "state/wall_touch", H5T_NATIVE_UINT8, 1, d1, s->wall_touch, "1", "wall contacts (bit per wall)");
@@ -548,6 +553,7 @@ static int ckpt_load_td(wg_run *run, hid_t f, long n)
   free(r);
   if (st == WG_OK) st = read_into(f, ck, "state/f", H5T_NATIVE_DOUBLE, s->f, n3);
   if (st == WG_OK) st = read_into(f, ck, "state/r_built", H5T_NATIVE_DOUBLE, s->r_built, n3);
+  if (st == WG_OK && s->gear) st = read_into(f, ck, "state/gear", H5T_NATIVE_DOUBLE, s->gear, 4 * n3);
   if (st == WG_OK) st = read_into(f, ck, "state/wall_touch", H5T_NATIVE_UINT8, s->wall_touch, (hsize_t)n);
   int rank;
   hsize_t dims[8] = {0};

@@ -67,7 +67,7 @@ enum {
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
-  K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, NKEYS
+  K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, K_INTEGRATOR, NKEYS
 };
 
 static const char *const engine_words[] = {"ed", "td", NULL};
@@ -76,6 +76,7 @@ static const char *const mass_words[] = {"unit", "volume", NULL};
 static const char *const init_words[] = {"lattice", "packed", NULL};
 static const char *const contact_words[] = {"linear", "hertz", NULL};
 static const char *const bridge_law_words[] = {"constant", "willett", NULL};
+static const char *const integrator_words[] = {"verlet", "gear", NULL};
 
 #define OFF(field) offsetof(wg_scene, field)
 #define INF INFINITY
@@ -212,6 +213,9 @@ static const key_desc keys[NKEYS] = {
   [K_WALL_BRIDGES] = {"wall_bridges", T_INT, OFF(wall_bridges), 0, 1, 0, DEF_VALUE, 0, NULL, "",
                       "1: particles form bridges with floor and lid too (wet walls; the force "
                       "balance of Eq. 4.15 holds the bed to the floor)", NULL, 0, 0, ONLY_TD},
+  [K_INTEGRATOR] = {"integrator", T_ENUM, OFF(integrator), 0, 1, 0, DEF_VALUE, 0, NULL, "",
+                    "velocity Verlet, or the thesis's fifth-order Gear predictor-corrector "
+                    "(bench_td compares them)", integrator_words, 0, 0, ONLY_TD},
 };
 
 _Static_assert(NKEYS <= sizeof(((wg_scene *)0)->key_line) / sizeof(int),

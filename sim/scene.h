@@ -55,6 +55,7 @@ typedef struct wg_scene {
   double skin;         /* skin: neighbour-list skin (0.1) */
   int bridge_law;      /* bridge_law = constant | willett */
   int wall_bridges;    /* wall_bridges: 1 = particles bond to floor and lid as to each other */
+  int integrator;      /* integrator = verlet | gear (WG_TD_VERLET / WG_TD_GEAR, td.h) */
   double bridge_volume;/* bridge_volume: V for the Willett law [d^3] */
   double contact_angle;/* contact_angle: theta_c in Eq. 2.10 [rad] (0) */
 

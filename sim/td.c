@@ -121,6 +121,7 @@ static void forces(wg_td *s, const double *vel)
   int dim = s->par.dim, up = s->up, wet = s->par.f_b > 0;
   memset(s->f, 0, sizeof *s->f * 3 * (size_t)s->n);
   double u_contact = 0, u_bond = 0, p_wall = 0, p_diss = 0, p_diss_wall = 0;
+  double half = s->par.integrator == WG_TD_VERLET ? 0.5 : 0;
   for (long i = 0; i < s->n; i++) s->f[3 * i + up] = -s->par.g * td_mass(s, i);
   for (long k = 0; k < s->npair; k++) {
     wg_td_pair *p = &s->pair[k];
@@ -142,17 +143,18 @@ static void forces(wg_td *s, const double *vel)
     }
     if (wet) {
       /* The bond force switches on or off between two steps, and Verlet applies half of the
-         last step's force: the energy booked is the bond energy less that half step's work. */
+         last step's force: the energy booked is the bond energy less that half step's work
+         (half; zero for Gear, whose corrector spreads the switch over later steps). */
       if (p->bonded && gap > s->par.s_crit) { /* rupture: the bond energy goes */
         p->bonded = 0;
         s->ruptures++;
         ksum_add(&s->dissipated_rupt, wg_td_bond_energy(&s->par, gap) -
-                                          0.5 * bond_force(&s->par, gap) * gapdot * s->par.dt);
+                                          half * bond_force(&s->par, gap) * gapdot * s->par.dt);
       } else if (!p->bonded && gap < 0) { /* capture at contact */
         p->bonded = 1;
         s->captures++;
         ksum_add(&s->dissipated_rupt, -wg_td_bond_energy(&s->par, gap) +
-                                          0.5 * s->par.f_b * gapdot * s->par.dt);
+                                          half * s->par.f_b * gapdot * s->par.dt);
       }
     }
     double fn = 0; /* along nrm on j (repulsive > 0) */
@@ -192,13 +194,13 @@ static void forces(wg_td *s, const double *vel)
           bonded = 0;
           s->ruptures++;
           ksum_add(&s->dissipated_rupt, wg_td_bond_energy(&s->par, gap) +
-                                            0.5 * bond_force(&s->par, gap) * xidot * s->par.dt);
+                                            half * bond_force(&s->par, gap) * xidot * s->par.dt);
         } else if (!bonded && gap < 0) {
           s->wall_touch[i] |= bond_bit;
           bonded = 1;
           s->captures++;
           ksum_add(&s->dissipated_rupt, -wg_td_bond_energy(&s->par, gap) -
-                                            0.5 * s->par.f_b * xidot * s->par.dt);
+                                            half * s->par.f_b * xidot * s->par.dt);
         }
         if (bonded) {
           fn -= bond_force(&s->par, gap);
@@ -226,6 +228,17 @@ static void forces(wg_td *s, const double *vel)
   s->p_diss_wall = p_diss_wall;
 }
 
+/* Gear: the second derivative from the forces now, the higher ones zero. */
+static void gear_start(wg_td *s)
+{
+  if (!s->gear) return;
+  double dt = s->par.dt;
+  memset(s->gear, 0, sizeof *s->gear * 12 * (size_t)s->n);
+  for (long i = 0; i < s->n; i++)
+    for (int a = 0; a < s->par.dim; a++)
+      s->gear[12 * i + 4 * a] = 0.5 * dt * dt * s->f[3 * i + a] / td_mass(s, i);
+}
+
 int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r,
                       const double *v, const double *radius, const double *mass, double t0)
 {
@@ -243,8 +256,9 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
   s->wall_touch = calloc((size_t)n, 1);
   s->radius = malloc(sizeof *s->radius * (size_t)n);
   if (mass) s->mass = malloc(sizeof *s->mass * (size_t)n);
+  if (par->integrator == WG_TD_GEAR) s->gear = calloc(4 * n3, sizeof *s->gear);
   if (!s->r || !s->v || !s->f || !s->vp || !s->r_built || !s->wall_touch || !s->radius ||
-      (mass && !s->mass)) {
+      (mass && !s->mass) || (par->integrator == WG_TD_GEAR && !s->gear)) {
     wg_td_free(s);
     return wg_error(WG_ENOMEM, "td", "cannot allocate %ld particles", n);
   }
@@ -269,6 +283,7 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
     return st;
   }
   forces(s, s->v);
+  gear_start(s);
   double k, u;
   wg_td_energy(s, &k, &u);
   s->e0 = k + u;
@@ -289,6 +304,7 @@ int wg_td_set_bonds(wg_td *s, const int32_t *pairs, long nb)
     found->bonded = 1;
   }
   forces(s, s->v);
+  gear_start(s);
   double k, u;
   wg_td_energy(s, &k, &u);
   s->e0 = k + u;
@@ -302,6 +318,7 @@ void wg_td_free(wg_td *s)
   free(s->v);
   free(s->f);
   free(s->vp);
+  free(s->gear);
   free(s->r_built);
   free(s->wall_touch);
   free(s->radius);
@@ -314,7 +331,7 @@ void wg_td_free(wg_td *s)
 /* Velocity Verlet.  Velocity-dependent forces (dashpots) see the velocity predicted at the
    full step, v(t) + dt f(t) / m, which keeps the scheme second order in the damping; the
    ledger's powers are integrated by the trapezoid rule between force evaluations. */
-int wg_td_advance(wg_td *s, double t_stop)
+static int verlet_advance(wg_td *s, double t_stop)
 {
   double dt = s->par.dt;
   while (s->t < t_stop - 0.5 * dt) {
@@ -343,6 +360,61 @@ int wg_td_advance(wg_td *s, double t_stop)
     ksum_add(&s->dissipated_wall, 0.5 * (p_diss_wall0 + s->p_diss_wall) * dt);
   }
   return WG_OK;
+}
+
+/* Gear's predictor-corrector of fifth order for r'' = f(r, r')/m (six values: r and the
+   scaled derivatives q_k = dt^k/k! d^k r/dt^k, k = 1..5; q_1 = dt v).  Predict by the
+   Taylor series (Pascal's triangle), evaluate the forces at the predicted r and v, and
+   correct every value by c_k times the misfit of q_2, with the coefficients for
+   velocity-dependent forces (c_0 = 3/16; Allen and Tildesley, App. E). */
+static int gear_advance(wg_td *s, double t_stop)
+{
+  static const double c[6] = {3.0 / 16, 251.0 / 360, 1, 11.0 / 18, 1.0 / 6, 1.0 / 60};
+  double dt = s->par.dt, inv_dt = 1 / dt;
+  int dim = s->par.dim;
+  while (s->t < t_stop - 0.5 * dt) {
+    double p_wall0 = s->p_wall, p_diss0 = s->p_diss, p_diss_wall0 = s->p_diss_wall;
+    for (long i = 0; i < s->n; i++)
+      for (int a = 0; a < dim; a++) {
+        double *q = &s->gear[12 * i + 4 * a]; /* q[0..3] = q_2..q_5 */
+        double q1 = dt * s->v[3 * i + a];
+        s->r[3 * i + a] += q1 + q[0] + q[1] + q[2] + q[3];
+        q1 += 2 * q[0] + 3 * q[1] + 4 * q[2] + 5 * q[3];
+        q[0] += 3 * q[1] + 6 * q[2] + 10 * q[3];
+        q[1] += 4 * q[2] + 10 * q[3];
+        q[2] += 5 * q[3];
+        s->v[3 * i + a] = q1 * inv_dt;
+      }
+    s->steps++;
+    s->t = s->t0 + (double)s->steps * dt;
+    if (need_rebuild(s)) {
+      int st = build_list(s);
+      if (st != WG_OK) return st;
+    }
+    forces(s, s->v);
+    for (long i = 0; i < s->n; i++) {
+      double h = 0.5 * dt * dt / td_mass(s, i);
+      for (int a = 0; a < dim; a++) {
+        double *q = &s->gear[12 * i + 4 * a];
+        double miss = h * s->f[3 * i + a] - q[0];
+        s->r[3 * i + a] += c[0] * miss;
+        s->v[3 * i + a] += c[1] * inv_dt * miss;
+        q[0] += c[2] * miss;
+        q[1] += c[3] * miss;
+        q[2] += c[4] * miss;
+        q[3] += c[5] * miss;
+      }
+    }
+    ksum_add(&s->injected_wall, 0.5 * (p_wall0 + s->p_wall) * dt);
+    ksum_add(&s->dissipated, 0.5 * (p_diss0 + s->p_diss) * dt);
+    ksum_add(&s->dissipated_wall, 0.5 * (p_diss_wall0 + s->p_diss_wall) * dt);
+  }
+  return WG_OK;
+}
+
+int wg_td_advance(wg_td *s, double t_stop)
+{
+  return s->gear ? gear_advance(s, t_stop) : verlet_advance(s, t_stop);
 }
 
 void wg_td_energy(const wg_td *s, double *kinetic, double *potential)
@@ -388,6 +460,7 @@ double wg_td_bond_energy(const wg_td_params *p, double gap)
 double wg_td_bytes_per_particle(const wg_td *s)
 {
   double per = 6 * 3 * sizeof(double) + 2 * sizeof(double) + 1; /* r v f vp r_built; radius mass */
+  if (s->gear) per += 12 * sizeof(double);
   return per + (double)s->pair_cap * sizeof(wg_td_pair) / (double)(s->n > 0 ? s->n : 1) +
          3 * sizeof(int32_t);
 }
@@ -425,6 +498,7 @@ void wg_td_params_from_scene(const wg_scene *sc, wg_td_params *out)
   }
   p.dt = sc->dt;
   p.skin = sc->skin;
+  p.integrator = sc->integrator;
   *out = p;
 }
 

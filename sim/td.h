@@ -1,7 +1,8 @@
 /* The time-driven engine (thesis Sec. 2.2-2.3): soft disks or spheres with a normal contact
    law (contact.h), the minimal capillary model, gravity, periodic lateral boundaries and a
-   floor and lid moving as A sin(w t), integrated by velocity Verlet with a neighbour list
-   (cut-off: contact + s_crit + skin, rebuilt when a particle has moved half a skin).
+   floor and lid moving as A sin(w t), integrated by velocity Verlet (default) or the thesis's
+   fifth-order Gear predictor-corrector, with a neighbour list (cut-off: contact + s_crit +
+   skin, rebuilt when a particle has moved half a skin).
 
    Minimal capillary model (model.md): a pair bonds when it touches; while bonded it attracts
    with the constant force F_B, overlapping or not, until its gap exceeds s_crit, where the
@@ -36,7 +37,10 @@ typedef struct wg_td_params {
                               (= sqrt(R/V)); 0: constant F_B */
   double dt;               /* time step [sqrt(d/g)] */
   double skin;             /* neighbour-list skin [d] */
+  int integrator;          /* WG_TD_VERLET or WG_TD_GEAR */
 } wg_td_params;
+
+enum { WG_TD_VERLET = 0, WG_TD_GEAR = 1 };
 
 /* A pair in the neighbour list.  Its state outlives list rebuilds (carried over by identity):
    the bond, and room for a tangential spring's history when friction is added. */
@@ -52,6 +56,8 @@ typedef struct wg_td {
   long n;
   double *r, *v, *f;       /* n x 3 */
   double *vp;              /* velocities predicted at the full step (n x 3) */
+  double *gear;            /* Gear only: scaled derivatives dt^k/k! d^k r/dt^k, k = 2..5
+                              (n x 3 x 4); NULL for Verlet */
   double *radius, *mass;   /* mass NULL: every mass is 1 */
   double *r_built;         /* positions at the last list build (n x 3) */
   uint8_t *wall_touch;     /* bit w: touching wall w at the last force evaluation;

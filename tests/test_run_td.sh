@@ -45,6 +45,16 @@ check "aborted time-driven run exits 3 and leaves its checkpoint" bash -c "[ $rc
 runin "$tmp/r" --no-volatile
 check "resumed time-driven run is byte-identical to the uninterrupted one" cmp -s "$tmp/a/run.h5" "$tmp/r/run.h5"
 
+# the Gear predictor-corrector: its derivatives are part of the checkpoint
+gear="integrator=gear t_end=3 dt_checkpoint=1"
+runin "$tmp/ga" --no-volatile $gear
+runin "$tmp/gr" --no-volatile $gear --abort-after-checkpoint 1
+runin "$tmp/gr" --no-volatile $gear
+check "Gear: a resumed run is byte-identical to the uninterrupted one" cmp -s "$tmp/ga/run.h5" "$tmp/gr/run.h5"
+check "Gear: the run file records the integrator" bash -c "h5dump -A -g /parameters '$tmp/ga/run.h5' | grep -A12 'ATTRIBUTE \"integrator\"' | grep -q gear"
+res=$(field ledger_residual "$tmp/ga/err")
+check "Gear, wet shaken run: energy ledger closes to $res (< 1e-2: bond switches cost O(dt))" lt "$res" 1e-2
+
 # keys of the other engine, and inconsistent contact or bridge keys: clear errors
 "$run" "$scenes/shake2d_td.ini" tc=1e-5 -o "$tmp/x.h5" 2> "$tmp/e1"; rc=$?
 check "an event-driven key in a time-driven scene is refused, naming both keys" \

@@ -290,8 +290,8 @@ static void test_visit_and_help(void)
     r2 = r2 ? r2 : wg_scene_set_override(&td, "grazing_angle=");
     r2 = r2 ? r2 : wg_scene_finish(&td);
     r2 = r2 ? r2 : wg_scene_visit(&td, record, &lt);
-    TH_CHECK(r2 == WG_OK && lt.count == 34 - 2 + 9 + 3 + 1 && strcmp(lt.last, "dt") == 0,
-             "visit, engine = td: 41 keys then 4 derived entries (count %d, last %s)", lt.count, lt.last);
+    TH_CHECK(r2 == WG_OK && lt.count == 34 - 2 + 10 + 3 + 1 && strcmp(lt.last, "dt") == 0,
+             "visit, engine = td: 42 keys then 4 derived entries (count %d, last %s)", lt.count, lt.last);
     TH_CLOSE("engine = td: dt = t_contact / steps_per_contact", td.dt, 0.005 / 50, 1e-12, 0);
   }
   TH_CHECK(strcmp(log.gamma, "15") == 0 && strcmp(log.container, "shaker") == 0,

@@ -59,15 +59,19 @@ seedmean() { for sd in $seeds; do "$bindir/wetgran-run" "$@" seed=$sd -q -o "$tm
   awk '{ s += $1; s2 += $1 * $1; n++ } END { m = s / n; printf "%.6g\t%.3g\n", m, sqrt((s2 / n - m * m) / (n - 1)) }'; }
 ed=$(seedmean "$scenes/shake2d_dry.ini" $bed)
 shaker=$out/bench_td_shaker.tsv
-echo -e "k\tdt\twall_s_per_time_unit\tparticle_steps_per_s\tledger_residual\ttg\ttg_err\ttg_rel_dev_k400\ttg_rel_dev_ed" > "$tmp/rows"
-for k in 400 200 100 50 25 12.5; do
-  tg=$(seedmean "$scenes/shake2d_dry.ini" $bed engine=td tc= steps_per_contact=$k)
-  [ "$k" = 400 ] && ref=${tg%%$'\t'*}
-  cat "$tmp"/err.* | grep '^summary:' | awk -v k=$k -v tg="$tg" -v ref=$ref -v ed="${ed%%$'\t'*}" '{
-    for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] += kv[2] } n++ }
-    END { split(tg, t, "\t")
-    printf "%s\t%.4g\t%.4g\t%.4g\t%.3g\t%.5g\t%.3g\t%+.4f\t%+.4f\n", k, 0.005 / k, v["wall_s"] / n / 60, v["particle_steps_per_s"] / n,
-      v["ledger_residual"] / n, t[1], t[2], t[1] / ref - 1, t[1] / ed - 1 }' >> "$tmp/rows"
+echo -e "k\tdt\twall_s_per_time_unit\tparticle_steps_per_s\tledger_residual\ttg\ttg_err\ttg_rel_dev_k400\ttg_rel_dev_ed\tintegrator" > "$tmp/rows"
+# both integrators: velocity Verlet (the default) and the thesis's Gear predictor-corrector;
+# the reference T_g is Verlet's at k = 400
+for ig in verlet gear; do
+  for k in 400 200 100 50 25 12.5; do
+    tg=$(seedmean "$scenes/shake2d_dry.ini" $bed engine=td tc= steps_per_contact=$k integrator=$ig)
+    [ -z "${ref:-}" ] && ref=${tg%%$'\t'*}
+    cat "$tmp"/err.* | grep '^summary:' | awk -v k=$k -v tg="$tg" -v ref=$ref -v ed="${ed%%$'\t'*}" -v ig=$ig '{
+      for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] += kv[2] } n++ }
+      END { split(tg, t, "\t")
+      printf "%s\t%.4g\t%.4g\t%.4g\t%.3g\t%.5g\t%.3g\t%+.4f\t%+.4f\t%s\n", k, 0.005 / k, v["wall_s"] / n / 60, v["particle_steps_per_s"] / n,
+        v["ledger_residual"] / n, t[1], t[2], t[1] / ref - 1, t[1] / ed - 1, ig }' >> "$tmp/rows"
+  done
 done
 { echo "# event-driven reference (3 seeds): T_g = ${ed%%$'\t'*} +- ${ed#*$'\t'}"; cat "$tmp/rows"; } | tee "$shaker"
 gnuplot -e "tsv='$shaker'; png='$out/bench_td_shaker.png'" "$here/td_shaker.gp" && echo "plot: $out/bench_td_shaker.png"
