@@ -78,5 +78,21 @@ for ig in verlet gear; do
   done
 done
 { echo "# event-driven reference (3 seeds): T_g = ${ed%%$'\t'*} +- ${ed#*$'\t'}"; cat "$tmp/rows"; } | tee "$shaker"
+echo "== wet shaker: the energy ledger of both integrators when bridges form and rupture"
+# shake2d_td.ini at 300 disks on 100 d (elastic, F_B = 4 mg), 20 time units, three seeds: a
+# bond switches on or off between steps; Verlet books the half step's work (td.c), Gear not
+wet=$out/bench_td_wet.tsv
+echo -e "k\tintegrator\twall_s_per_time_unit\tledger_residual\truptures_per_time_unit" > "$wet"
+for ig in verlet gear; do
+  for k in 100 50 25; do
+    for sd in $seeds; do
+      "$bindir/wetgran-run" "$scenes/shake2d_td.ini" n=300 lx=100 t_end=20 profile_start=10 dt_snapshot=0 \
+        dt_checkpoint=0 steps_per_contact=$k integrator=$ig seed=$sd -q -o "$tmp/w.h5" 2> "$tmp/werr.$sd"
+    done
+    cat "$tmp"/werr.* | grep '^summary:' | awk -v k=$k -v ig=$ig '{ for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] += kv[2] } n++ }
+      END { printf "%s\t%s\t%.4g\t%.3g\t%.4g\n", k, ig, v["wall_s"] / n / 20, v["ledger_residual"] / n, v["ruptures"] / n / 20 }' >> "$wet"
+  done
+done
+cat "$wet"
 gnuplot -e "tsv='$shaker'; png='$out/bench_td_shaker.png'" "$here/td_shaker.gp" && echo "plot: $out/bench_td_shaker.png"
-[ -z "${BENCH_ONLY:-}" ] && echo "results: $tsv, $out/bench_wall.tsv, $out/bench_td.tsv, $shaker" || echo "results: $shaker"
+[ -z "${BENCH_ONLY:-}" ] && echo "results: $tsv, $out/bench_wall.tsv, $out/bench_td.tsv, $shaker, $wet" || echo "results: $shaker, $wet"
