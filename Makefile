@@ -53,7 +53,7 @@ tools: $(TOOLS) $(BIN)/wetgran-run.engine
 # changes, not when the binary is merely relinked (a new commit changes the version string).
 # The time-driven engine's own modules (td, contact) are left out: event-driven runs do not
 # use them.
-ED_SRC := $(sort $(filter-out sim/td.% sim/contact.%,$(wildcard sim/*.c sim/*.h)))
+ED_SRC := $(sort $(filter-out sim/td.% sim/contact.% sim/friction.%,$(wildcard sim/*.c sim/*.h)))
 $(BIN)/wetgran-run.engine: $(ED_SRC) $(BIN)/wetgran-run
 	@cat $(ED_SRC) | sha256sum | cmp -s - $@ || cat $(ED_SRC) | sha256sum > $@
 

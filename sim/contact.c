@@ -37,3 +37,16 @@ double wg_contact_force(const wg_contact *c, double xi, double xidot, double r_e
   double f = k * (xi * s + c->ad * s * xidot);
   return f > 0 ? f : 0;
 }
+
+void wg_contact_stiffness(const wg_contact *c, double xi, double r_eff, double m_eff,
+                          double *k_n, double *gamma_n)
+{
+  if (c->law == WG_CONTACT_LINEAR) {
+    *k_n = c->k;
+    *gamma_n = 2 * c->zeta * sqrt(c->k * m_eff);
+    return;
+  }
+  double k = c->kh * sqrt(r_eff * xi); /* Eq. 2.7: F = k xi + k A_d xidot */
+  *k_n = k;
+  *gamma_n = k * c->ad;
+}

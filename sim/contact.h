@@ -8,8 +8,8 @@
                             effective radius R_i R_j / (R_i + R_j) (the thesis prints its
                             inverse: a typo), kept >= 0 (no pull at the end of a contact).
    Each returns the force and the elastic energy stored, so the engine's energy ledger can
-   book the rest of the work as dissipation.  Tangential springs, rolling resistance and
-   rotation enter as further terms of a contact (see wg_td_pair); none is needed yet. */
+   book the rest of the work as dissipation.  Tangential forces (friction.h) take their
+   stiffness and damping from the normal law's at the same overlap (wg_contact_stiffness). */
 #ifndef WG_CONTACT_H
 #define WG_CONTACT_H
 
@@ -34,6 +34,11 @@ wg_contact wg_contact_hertz(double kh, double ad);
    (the rest of the force, times xidot, is the power dissipated). */
 double wg_contact_force(const wg_contact *c, double xi, double xidot, double r_eff,
                         double m_eff, double *f_elastic, double *u_elastic);
+
+/* The normal law's secant stiffness F_elastic / xi (*k_n) and dashpot coefficient (*gamma_n:
+   the force per unit xidot) at overlap xi > 0. */
+void wg_contact_stiffness(const wg_contact *c, double xi, double r_eff, double m_eff,
+                          double *k_n, double *gamma_n);
 
 /* Restitution damping ratio of the linear law: zeta(e). */
 double wg_contact_zeta(double e);

@@ -109,6 +109,14 @@ static void particle(const wg_run *run, long k, double *r, double *v, double *ra
   *mass = s->mass ? s->mass[k] : 1.0;
 }
 
+/* Angular velocity components per particle in a snapshot: 1 (2D) or 3 (3D) with friction,
+   else 0. */
+static int spin_components(const wg_run *run)
+{
+  if (!is_td(run) || !run->td.rot) return 0;
+  return run->sc->dim == 2 ? 1 : 3;
+}
+
 /* Bridges per particle (storage order), NULL when dry. */
 static const uint8_t *bond_counts(wg_run *run)
 {
@@ -265,6 +273,9 @@ static int write_frame(wg_run *run)
       particle(run, slot_of(run, id), r, v, &radius, &m);
       bytes += fwrite(what ? v : r, sizeof(double), (size_t)dim, run->frames) * sizeof(double);
     }
+  int nw = spin_components(run);
+  for (long id = 0; nw && id < n; id++)
+    bytes += fwrite(&run->td.w[3 * id + 3 - nw], sizeof(double), (size_t)nw, run->frames) * sizeof(double);
   const uint8_t *nbond = bond_counts(run);
   for (long id = 0; id < n; id++) {
     uint8_t c = nbond ? nbond[slot_of(run, id)] : 0;
@@ -290,7 +301,7 @@ static int write_frame(wg_run *run)
       }
     }
   }
-  size_t expect = (size_t)n * (2 * dim * sizeof(double) + 1) + (size_t)nb * 8;
+  size_t expect = (size_t)n * ((2 * dim + nw) * sizeof(double) + 1) + (size_t)nb * 8;
   if (bytes != expect || fflush(run->frames) != 0)
     return wg_error(WG_EIO, run->frames_path, "cannot write snapshot %ld: %s", run->nframes,
                     strerror(errno));
@@ -390,6 +401,18 @@ static int ckpt_write_td(wg_run *run, hid_t f)
     hsize_t dg[2] = {(hsize_t)n, 12};
     st |= wg_h5_write(f, "state/gear", H5T_NATIVE_DOUBLE, 2, dg, s->gear, "d",
                       "Gear's scaled derivatives dt^k/k! d^k r/dt^k, k = 2..5, per axis");
+  }
+  if (s->rot) {
+    hsize_t dw[2] = {2 * (hsize_t)n, 4};
+    st |= wg_h5_write(f, "state/w", H5T_NATIVE_DOUBLE, 2, d2, s->w, "sqrt(g/d)", "angular velocities");
+    st |= wg_h5_write(f, "state/torque", H5T_NATIVE_DOUBLE, 2, d2, s->tq, "m g d", "torques");
+    st |= wg_h5_write(f, "state/wall_spring", H5T_NATIVE_DOUBLE, 2, dw, s->wall_spring, "d, m g / d",
+                      "tangential springs on the walls (2 i + wall): extension, stiffness");
+    if (np) {
+      hsize_t ds[2] = {(hsize_t)np, 4};
+      st |= wg_h5_write(f, "state/pair_spring", H5T_NATIVE_DOUBLE, 2, ds, s->spring, "d, m g / d",
+                        "tangential springs of the neighbour pairs: extension, stiffness");
+    }
   }
   st |= wg_h5_write(f, "state/radius", H5T_NATIVE_DOUBLE, 1, d1, s->radius, "d", "radii");
   if (s->mass) st |= wg_h5_write(f, "state/mass", H5T_NATIVE_DOUBLE, 1, d1, s->mass, "m", "masses");
@@ -584,6 +607,15 @@ static int ckpt_load_td(wg_run *run, hid_t f, long n)
   }
   free(ij);
   free(flags);
+  if (st == WG_OK && s->rot) {
+    wg_spring *sp = realloc(s->spring, sizeof *sp * (size_t)(s->pair_cap ? s->pair_cap : 1));
+    if (!sp) return WG_ENOMEM;
+    s->spring = sp;
+    st = read_into(f, ck, "state/w", H5T_NATIVE_DOUBLE, s->w, n3);
+    if (st == WG_OK) st = read_into(f, ck, "state/torque", H5T_NATIVE_DOUBLE, s->tq, n3);
+    if (st == WG_OK) st = read_into(f, ck, "state/wall_spring", H5T_NATIVE_DOUBLE, s->wall_spring, 8 * (hsize_t)n);
+    if (st == WG_OK && np) st = read_into(f, ck, "state/pair_spring", H5T_NATIVE_DOUBLE, s->spring, 4 * (hsize_t)np);
+  }
   if (st != WG_OK) return st;
   s->npair = np;
   for (int k = 0; k < TD_NCOUNT; k++) *td_count(s, k) = counts[k];
@@ -826,7 +858,8 @@ static int write_profiles(wg_run *run, hid_t f)
   return st;
 }
 
-/* Copy the snapshot frames from the scratch file into H5MD elements. */
+/* Copy the snapshot frames from the scratch file into H5MD elements (angular velocities
+   only with friction). */
 static int write_frames(wg_run *run, hid_t f)
 {
   long n = run->sc->n;
@@ -834,9 +867,13 @@ static int write_frames(wg_run *run, hid_t f)
   if (fflush(run->frames) != 0) return wg_error(WG_EIO, run->frames_path, "cannot flush");
   FILE *in = fopen(run->frames_path, "rb");
   if (!in) return wg_error(WG_EIO, run->frames_path, "cannot reopen: %s", strerror(errno));
-  wg_h5md_element pos, vel, nbr;
-  hsize_t fd[2] = {(hsize_t)n, (hsize_t)dim}, fb[1] = {(hsize_t)n};
+  wg_h5md_element pos, vel, nbr, spin;
+  int nw = spin_components(run);
+  hsize_t fd[2] = {(hsize_t)n, (hsize_t)dim}, fb[1] = {(hsize_t)n}, fw[2] = {(hsize_t)n, (hsize_t)nw};
   hsize_t F = (hsize_t)run->nframes;
+  if (nw)
+    st |= wg_h5md_element_create(f, "/particles/all/angular_velocity", H5T_NATIVE_DOUBLE, nw == 1 ? 1 : 2,
+                                 fw, F, "sqrt(g/d)", nw == 1 ? "angular velocities (about z)" : "angular velocities", &spin);
   st |= wg_h5md_element_create(f, "/particles/all/position", H5T_NATIVE_DOUBLE, 2, fd, F, "d",
                                "particle centres, wrapped into the box", &pos);
   st |= wg_h5md_element_create(f, "/particles/all/velocity", H5T_NATIVE_DOUBLE, 2, fd, F, "sqrt(g d)",
@@ -861,6 +898,8 @@ static int write_frames(wg_run *run, hid_t f)
     if (st == WG_OK) st = wg_h5md_element_write(&pos, step, t, buf);
     if (st == WG_OK && fread(buf, sizeof(double), (size_t)n * dim, in) != (size_t)n * dim) st = WG_EIO;
     if (st == WG_OK) st = wg_h5md_element_write(&vel, step, t, buf);
+    if (st == WG_OK && nw && fread(buf, sizeof(double), (size_t)n * nw, in) != (size_t)n * nw) st = WG_EIO;
+    if (st == WG_OK && nw) st = wg_h5md_element_write(&spin, step, t, buf);
     if (st == WG_OK && fread(cnt, 1, (size_t)n, in) != (size_t)n) st = WG_EIO;
     if (st == WG_OK) st = wg_h5md_element_write(&nbr, step, t, cnt);
     long long nb = run->frame_bonds[k];
@@ -885,6 +924,7 @@ static int write_frames(wg_run *run, hid_t f)
   wg_h5md_element_close(&pos);
   wg_h5md_element_close(&vel);
   wg_h5md_element_close(&nbr);
+  if (nw) wg_h5md_element_close(&spin);
   if (pairs >= 0) H5Dclose(pairs);
   free(offset);
   free(buf);

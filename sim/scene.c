@@ -67,7 +67,8 @@ enum {
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
-  K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, K_INTEGRATOR, NKEYS
+  K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, K_INTEGRATOR, K_MU, K_MU_WALL, K_KT_RATIO,
+  K_GT_RATIO, K_MU_ROLL, NKEYS
 };
 
 static const char *const engine_words[] = {"ed", "td", NULL};
@@ -216,6 +217,21 @@ static const key_desc keys[NKEYS] = {
   [K_INTEGRATOR] = {"integrator", T_ENUM, OFF(integrator), 0, 1, 0, DEF_VALUE, 0, NULL, "",
                     "velocity Verlet, or the thesis's fifth-order Gear predictor-corrector "
                     "(bench_td compares them)", integrator_words, 0, 0, ONLY_TD},
+  [K_MU] = {"mu", T_DOUBLE, OFF(mu), 0, INF, MAX_EXCL, DEF_VALUE, 0, NULL, "1",
+            "Coulomb friction coefficient between particles (tangential springs, rotation); "
+            "0 = frictionless", NULL, 0, 0, ONLY_TD},
+  [K_MU_WALL] = {"mu_wall", T_DOUBLE, OFF(mu_wall), 0, INF, MAX_EXCL, DEF_COND, 0, "mu", "1",
+                 "Coulomb friction coefficient at floor and lid", NULL, 0, 0, ONLY_TD},
+  [K_KT_RATIO] = {"kt_ratio", T_DOUBLE, OFF(kt_ratio), 0, INF, MIN_EXCL | MAX_EXCL, DEF_VALUE,
+                  2.0 / 7.0, NULL, "1",
+                  "tangential over normal stiffness at the same overlap, k_t / k_n", NULL, 0,
+                  0, ONLY_TD},
+  [K_GT_RATIO] = {"gt_ratio", T_DOUBLE, OFF(gt_ratio), 0, INF, MAX_EXCL, DEF_VALUE, 0, NULL, "1",
+                  "tangential over normal dashpot coefficient, gamma_t / gamma_n", NULL, 0, 0,
+                  ONLY_TD},
+  [K_MU_ROLL] = {"mu_roll", T_DOUBLE, OFF(mu_roll), 0, INF, MAX_EXCL, DEF_VALUE, 0, NULL, "1",
+                 "rolling resistance: a torque up to mu_roll F_n times the lever against "
+                 "relative rolling (particles and walls); 0 = none", NULL, 0, 0, ONLY_TD},
 };
 
 _Static_assert(NKEYS <= sizeof(((wg_scene *)0)->key_line) / sizeof(int),
@@ -797,6 +813,12 @@ static int resolve_engine(wg_scene *sc)
   }
   if (sc->wall_bridges && sc->s_crit == 0)
     return pair_error(sc, K_WALL_BRIDGES, K_S_CRIT, "wall bridges need a wet scene (s_crit > 0)");
+  if (!given(sc, K_MU_WALL)) sc->mu_wall = sc->mu;
+  if (sc->mu_roll > 0 && sc->mu == 0 && sc->mu_wall == 0)
+    return pair_error(sc, K_MU_ROLL, K_MU, "rolling resistance needs friction (mu or mu_wall > 0)");
+  if (sc->integrator == 1 && (sc->mu > 0 || sc->mu_wall > 0))
+    return pair_error(sc, sc->mu > 0 ? K_MU : K_MU_WALL, K_INTEGRATOR,
+                      "friction needs integrator = verlet (Gear has no rotation)");
   return WG_OK;
 }
 

@@ -58,6 +58,11 @@ typedef struct wg_scene {
   int integrator;      /* integrator = verlet | gear (WG_TD_VERLET / WG_TD_GEAR, td.h) */
   double bridge_volume;/* bridge_volume: V for the Willett law [d^3] */
   double contact_angle;/* contact_angle: theta_c in Eq. 2.10 [rad] (0) */
+  double mu;           /* mu: Coulomb friction between particles, 0 = frictionless (0) */
+  double mu_wall;      /* mu_wall: Coulomb friction at the walls (mu) */
+  double kt_ratio;     /* kt_ratio: k_t / k_n (2/7) */
+  double gt_ratio;     /* gt_ratio: gamma_t / gamma_n (0) */
+  double mu_roll;      /* mu_roll: rolling resistance (0) */
 
   /* --- derived by wg_scene_finish() --- */
   double amplitude;    /* A [d]: from gamma and estar (or estar_d); 0 when not a shaker */

@@ -37,24 +37,41 @@ static double bond_force(const wg_td_params *p, double gap)
 
 static double cutoff_extra(const wg_td *s) { return (s->par.f_b > 0 ? s->par.s_crit : 0) + s->par.skin; }
 
+/* A pair with state (bond, contact) saved across a rebuild, with its old index (spring). */
+typedef struct saved_pair {
+  wg_td_pair p;
+  long k;
+} saved_pair;
+
+static int cmp_saved(const void *a, const void *b)
+{
+  return cmp_pair(&((const saved_pair *)a)->p, &((const saved_pair *)b)->p);
+}
+
 /* The neighbour list from scratch: pairs closer than contact + s_crit + skin.  Periodic
-   coordinates are wrapped first.  A pair's state (bond, contact) carries over by identity. */
+   coordinates are wrapped first.  A pair's state (bond, contact, spring) carries over by
+   identity. */
 static int build_list(wg_td *s)
 {
   int dim = s->par.dim;
-  wg_td_pair *bonded = NULL; /* every pair with state: bonded or touching */
+  saved_pair *saved = NULL; /* every pair with state: bonded or touching */
+  wg_spring *spring = NULL; /* the new list's springs (friction) */
   long nb = 0, nbond = 0;
   for (long k = 0; k < s->npair; k++) nb += s->pair[k].bonded | s->pair[k].touching;
   if (nb) {
-    bonded = malloc(sizeof *bonded * (size_t)nb);
-    if (!bonded) return wg_error(WG_ENOMEM, "td", "cannot allocate %ld pair states", nb);
+    saved = malloc(sizeof *saved * (size_t)nb);
+    if (!saved) return wg_error(WG_ENOMEM, "td", "cannot allocate %ld pair states", nb);
     nb = 0;
     for (long k = 0; k < s->npair; k++)
       if (s->pair[k].bonded | s->pair[k].touching) {
-        bonded[nb++] = s->pair[k];
+        saved[nb++] = (saved_pair){s->pair[k], k};
         nbond += s->pair[k].bonded;
       }
-    qsort(bonded, (size_t)nb, sizeof *bonded, cmp_pair);
+    qsort(saved, (size_t)nb, sizeof *saved, cmp_saved);
+  }
+  if (s->rot && !(spring = malloc(sizeof *spring * (size_t)(s->pair_cap ? s->pair_cap : 1)))) {
+    free(saved);
+    return wg_error(WG_ENOMEM, "td", "cannot allocate %ld springs", s->pair_cap);
   }
   for (long i = 0; i < s->n; i++)
     for (int a = 0; a < dim; a++)
@@ -76,23 +93,31 @@ static int build_list(wg_td *s)
         if (s->npair == s->pair_cap) {
           long cap = s->pair_cap ? 2 * s->pair_cap : 8 * s->n + 16;
           wg_td_pair *p = realloc(s->pair, sizeof *p * (size_t)cap);
-          if (!p) {
-            free(bonded);
+          wg_spring *sp = s->rot ? realloc(spring, sizeof *sp * (size_t)cap) : NULL;
+          if (p) s->pair = p;
+          if (sp) spring = sp;
+          if (!p || (s->rot && !sp)) {
+            free(saved);
+            free(spring);
             return wg_error(WG_ENOMEM, "td", "cannot allocate %ld neighbour pairs", cap);
           }
-          s->pair = p;
           s->pair_cap = cap;
         }
-        wg_td_pair q = {.i = (int32_t)i, .j = j, .bonded = 0, .touching = 0};
-        const wg_td_pair *old = nb ? bsearch(&q, bonded, (size_t)nb, sizeof *bonded, cmp_pair) : NULL;
+        saved_pair q = {.p = {.i = (int32_t)i, .j = j, .bonded = 0, .touching = 0}, .k = -1};
+        const saved_pair *old = nb ? bsearch(&q, saved, (size_t)nb, sizeof *saved, cmp_saved) : NULL;
         if (old) q = *old;
-        s->pair[s->npair++] = q;
+        if (s->rot) spring[s->npair] = q.k >= 0 ? s->spring[q.k] : (wg_spring){{0, 0, 0}, 0};
+        s->pair[s->npair++] = q.p;
       }
+  }
+  if (s->rot) {
+    free(s->spring);
+    s->spring = spring;
   }
   /* a bonded pair is always within the cut-off (its gap <= s_crit, moves < skin): check */
   long kept = 0;
   for (long k = 0; k < s->npair; k++) kept += s->pair[k].bonded;
-  free(bonded);
+  free(saved);
   if (kept != nbond)
     return wg_error(WG_EFAIL, "td", "neighbour list lost %ld bonds at t = %g", nbond - kept, s->t);
   memcpy(s->r_built, s->r, sizeof *s->r * 3 * (size_t)s->n);
@@ -115,14 +140,19 @@ static int need_rebuild(const wg_td *s)
 }
 
 /* Forces at the current positions and the velocities vel (in Verlet: predicted at the full
-   step), the bond updates they imply, and the energies and powers for the ledger. */
-static void forces(wg_td *s, const double *vel)
+   step), the bond updates they imply, and the energies and powers for the ledger.  vhalf:
+   the velocities over the step just taken (Verlet's half-step ones), which move the
+   tangential springs; NULL at an evaluation that follows no step. */
+static void forces(wg_td *s, const double *vel, const double *vhalf)
 {
   int dim = s->par.dim, up = s->up, wet = s->par.f_b > 0;
   memset(s->f, 0, sizeof *s->f * 3 * (size_t)s->n);
   double u_contact = 0, u_bond = 0, p_wall = 0, p_diss = 0, p_diss_wall = 0;
   double half = s->par.integrator == WG_TD_VERLET ? 0.5 : 0;
   for (long i = 0; i < s->n; i++) s->f[3 * i + up] = -s->par.g * td_mass(s, i);
+  const wg_friction *fr = s->rot && s->par.fric.mu > 0 ? &s->par.fric : NULL;
+  const double *wv = s->rot ? (vhalf ? s->wp : s->w) : NULL, *whalf = s->w;
+  if (s->rot) memset(s->tq, 0, sizeof *s->tq * 3 * (size_t)s->n);
   for (long k = 0; k < s->npair; k++) {
     wg_td_pair *p = &s->pair[k];
     long i = p->i, j = p->j;
@@ -133,6 +163,7 @@ static void forces(wg_td *s, const double *vel)
     dist = sqrt(dist);
     double gap = dist - s->radius[i] - s->radius[j];
     if (gap > 0 && !p->bonded) {
+      if (fr && p->touching) ksum_add(&s->dissipated, wg_spring_release(&s->spring[k]));
       p->touching = 0;
       continue;
     }
@@ -159,6 +190,7 @@ static void forces(wg_td *s, const double *vel)
     }
     double fn = 0; /* along nrm on j (repulsive > 0) */
     if (gap < 0 && !p->touching) s->contacts++;
+    if (fr && gap >= 0 && p->touching) ksum_add(&s->dissipated, wg_spring_release(&s->spring[k]));
     p->touching = gap < 0;
     if (gap < 0) {
       double mi = td_mass(s, i), mj = td_mass(s, j), fel, uel;
@@ -166,6 +198,41 @@ static void forces(wg_td *s, const double *vel)
       fn = wg_contact_force(&s->par.pp, -gap, -gapdot, reff, mi * mj / (mi + mj), &fel, &uel);
       u_contact += uel;
       p_diss += (fn - fel) * -gapdot;
+      if (fr) { /* the tangential spring; levers R - xi/2 (notes-sheared-layering Eq. 16) */
+        double kn, gn, vji[3] = {0, 0, 0}, vt[3], dvt[3], ft[3], tn[3], pw;
+        double li = s->radius[i] + 0.5 * gap, lj = s->radius[j] + 0.5 * gap;
+        wg_contact_stiffness(&s->par.pp, -gap, reff, mi * mj / (mi + mj), &kn, &gn);
+        for (int a = 0; a < dim; a++) vji[a] = vel[3 * j + a] - vel[3 * i + a];
+        wg_contact_tangential_velocity(vji, nrm, li, lj, &wv[3 * i], &wv[3 * j], vt);
+        if (vhalf) {
+          for (int a = 0; a < dim; a++) vji[a] = vhalf[3 * j + a] - vhalf[3 * i + a];
+          wg_contact_tangential_velocity(vji, nrm, li, lj, &whalf[3 * i], &whalf[3 * j], dvt);
+        }
+        double du = wg_spring_update(&s->spring[k], nrm, vt, vhalf ? dvt : NULL, fr->kt_ratio * kn,
+                                     fr->gt_ratio * gn, fr->mu * fmax(fn, 0), s->par.dt, ft, &pw);
+        if (vhalf) ksum_add(&s->dissipated, -du);
+        u_contact += s->spring[k].u;
+        p_diss += pw;
+        if (fr->mu_roll > 0) {
+          double ii = wg_inertia(dim, mi, s->radius[i]), ij = wg_inertia(dim, mj, s->radius[j]);
+          double l = 2 * li * lj / (li + lj), tr[3] = {0, 0, 0};
+          p_diss += wg_rolling_resistance(nrm, l, &wv[3 * i], &wv[3 * j], fr->mu_roll * fmax(fn, 0),
+                                          0.5 / (s->par.dt * l * l * (1 / ii + 1 / ij)), tr);
+          for (int a = 0; a < 3; a++) {
+            s->tq[3 * i + a] += tr[a];
+            s->tq[3 * j + a] -= tr[a];
+          }
+        }
+        tn[0] = nrm[1] * ft[2] - nrm[2] * ft[1];
+        tn[1] = nrm[2] * ft[0] - nrm[0] * ft[2];
+        tn[2] = nrm[0] * ft[1] - nrm[1] * ft[0];
+        for (int a = 0; a < 3; a++) {
+          s->f[3 * j + a] += ft[a];
+          s->f[3 * i + a] -= ft[a];
+          s->tq[3 * i + a] -= li * tn[a];
+          s->tq[3 * j + a] -= lj * tn[a];
+        }
+      }
     }
     if (p->bonded) {
       fn -= bond_force(&s->par, gap);
@@ -176,6 +243,7 @@ static void forces(wg_td *s, const double *vel)
       s->f[3 * i + a] -= fn * nrm[a];
     }
   }
+  const wg_friction *frw = s->rot && s->par.fric_wall.mu > 0 ? &s->par.fric_wall : NULL;
   for (int w = 0; w < s->par.nwalls; w++) {
     const wg_wall *wl = &s->par.wall[w];
     double zw = wg_wall_position(wl, s->t), vw = wg_wall_velocity(wl, s->t);
@@ -183,6 +251,8 @@ static void forces(wg_td *s, const double *vel)
     for (long i = 0; i < s->n; i++) {
       double gap = wl->side * (s->r[3 * i + up] - zw) - s->radius[i];
       int bonded = s->wall_touch[i] & bond_bit;
+      if (frw && gap >= 0 && (s->wall_touch[i] & bit))
+        ksum_add(&s->dissipated_wall, wg_spring_release(&s->wall_spring[2 * i + w]));
       if (gap >= 0 && !bonded) {
         s->wall_touch[i] &= (uint8_t)~bit;
         continue;
@@ -214,6 +284,37 @@ static void forces(wg_td *s, const double *vel)
         fn += fc;
         u_contact += uel;
         p_diss_wall += (fc - fel) * xidot;
+        if (frw) { /* the wall as a pair partner j that does not turn; n from i to the wall */
+          double kn, gn, nrm[3] = {0, 0, 0}, vji[3] = {0, 0, 0}, vt[3], dvt[3], ft[3], pw, tn[3];
+          static const double still[3] = {0, 0, 0};
+          double li = s->radius[i] + 0.5 * gap;
+          wg_spring *sp = &s->wall_spring[2 * i + w];
+          nrm[up] = -wl->side;
+          for (int a = 0; a < dim; a++) vji[a] = -vel[3 * i + a];
+          vji[up] += vw;
+          wg_contact_stiffness(&s->par.pw, -gap, s->radius[i], td_mass(s, i), &kn, &gn);
+          wg_contact_tangential_velocity(vji, nrm, li, 0, &wv[3 * i], still, vt);
+          if (vhalf) { /* the wall moves only along nrm: no tangential part */
+            for (int a = 0; a < dim; a++) vji[a] = -vhalf[3 * i + a];
+            wg_contact_tangential_velocity(vji, nrm, li, 0, &whalf[3 * i], still, dvt);
+          }
+          double du = wg_spring_update(sp, nrm, vt, vhalf ? dvt : NULL, frw->kt_ratio * kn,
+                                       frw->gt_ratio * gn, frw->mu * fmax(fc, 0), s->par.dt, ft, &pw);
+          if (vhalf) ksum_add(&s->dissipated_wall, -du);
+          u_contact += sp->u;
+          p_diss_wall += pw;
+          if (frw->mu_roll > 0)
+            p_diss_wall += wg_rolling_resistance(nrm, li, &wv[3 * i], still, frw->mu_roll * fmax(fc, 0),
+                                                 0.5 * wg_inertia(dim, td_mass(s, i), s->radius[i]) /
+                                                     (s->par.dt * li * li), &s->tq[3 * i]);
+          tn[0] = nrm[1] * ft[2] - nrm[2] * ft[1];
+          tn[1] = nrm[2] * ft[0] - nrm[0] * ft[2];
+          tn[2] = nrm[0] * ft[1] - nrm[1] * ft[0];
+          for (int a = 0; a < 3; a++) {
+            s->f[3 * i + a] -= ft[a];
+            s->tq[3 * i + a] -= li * tn[a];
+          }
+        }
       } else {
         s->wall_touch[i] &= (uint8_t)~bit;
       }
@@ -257,8 +358,20 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
   s->radius = malloc(sizeof *s->radius * (size_t)n);
   if (mass) s->mass = malloc(sizeof *s->mass * (size_t)n);
   if (par->integrator == WG_TD_GEAR) s->gear = calloc(4 * n3, sizeof *s->gear);
+  s->rot = par->fric.mu > 0 || par->fric_wall.mu > 0;
+  if (s->rot && par->integrator != WG_TD_VERLET) {
+    wg_td_free(s);
+    return wg_error(WG_EINVAL, "td", "friction needs the Verlet integrator (Gear has no rotation)");
+  }
+  if (s->rot) {
+    s->w = calloc(n3, sizeof *s->w);
+    s->wp = calloc(n3, sizeof *s->wp);
+    s->tq = calloc(n3, sizeof *s->tq);
+    s->wall_spring = calloc(2 * (size_t)n, sizeof *s->wall_spring);
+  }
   if (!s->r || !s->v || !s->f || !s->vp || !s->r_built || !s->wall_touch || !s->radius ||
-      (mass && !s->mass) || (par->integrator == WG_TD_GEAR && !s->gear)) {
+      (mass && !s->mass) || (par->integrator == WG_TD_GEAR && !s->gear) ||
+      (s->rot && (!s->w || !s->wp || !s->tq || !s->wall_spring))) {
     wg_td_free(s);
     return wg_error(WG_ENOMEM, "td", "cannot allocate %ld particles", n);
   }
@@ -282,7 +395,7 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
     wg_td_free(s);
     return st;
   }
-  forces(s, s->v);
+  forces(s, s->v, NULL);
   gear_start(s);
   double k, u;
   wg_td_energy(s, &k, &u);
@@ -303,12 +416,24 @@ int wg_td_set_bonds(wg_td *s, const int32_t *pairs, long nb)
       return wg_error(WG_EINVAL, "td", "bridge %d-%d: the pair is not within reach of a bridge", q.i, q.j);
     found->bonded = 1;
   }
-  forces(s, s->v);
+  forces(s, s->v, NULL);
   gear_start(s);
   double k, u;
   wg_td_energy(s, &k, &u);
   s->e0 = k + u;
   memset(&s->dissipated_rupt, 0, sizeof s->dissipated_rupt);
+  return WG_OK;
+}
+
+int wg_td_set_angular_velocities(wg_td *s, const double *w)
+{
+  if (!s->rot) return wg_error(WG_EINVAL, "td", "angular velocities given, but the run has no friction");
+  for (long i = 0; i < s->n; i++)
+    for (int a = s->par.dim == 2 ? 2 : 0; a < 3; a++) s->w[3 * i + a] = w[3 * i + a];
+  forces(s, s->v, NULL);
+  double k, u;
+  wg_td_energy(s, &k, &u);
+  s->e0 = k + u;
   return WG_OK;
 }
 
@@ -324,13 +449,33 @@ void wg_td_free(wg_td *s)
   free(s->radius);
   free(s->mass);
   free(s->pair);
+  free(s->w);
+  free(s->wp);
+  free(s->tq);
+  free(s->spring);
+  free(s->wall_spring);
   if (s->cells.head) wg_cells_free(&s->cells);
   memset(s, 0, sizeof *s);
 }
 
+/* Half a kick of the angular velocities by the torques; *pred: also the prediction at the
+   full step, w + dt tau / I (2D: the z axis only). */
+static void rotation_kick(wg_td *s, int pred)
+{
+  int a0 = s->par.dim == 2 ? 2 : 0;
+  for (long i = 0; i < s->n; i++) {
+    double h = 0.5 * s->par.dt / wg_inertia(s->par.dim, td_mass(s, i), s->radius[i]);
+    for (int a = a0; a < 3; a++) {
+      s->w[3 * i + a] += h * s->tq[3 * i + a];
+      if (pred) s->wp[3 * i + a] = s->w[3 * i + a] + h * s->tq[3 * i + a];
+    }
+  }
+}
+
 /* Velocity Verlet.  Velocity-dependent forces (dashpots) see the velocity predicted at the
    full step, v(t) + dt f(t) / m, which keeps the scheme second order in the damping; the
-   ledger's powers are integrated by the trapezoid rule between force evaluations. */
+   ledger's powers are integrated by the trapezoid rule between force evaluations.  Angular
+   velocities take the same kicks from the torques. */
 static int verlet_advance(wg_td *s, double t_stop)
 {
   double dt = s->par.dt;
@@ -344,17 +489,19 @@ static int verlet_advance(wg_td *s, double t_stop)
         s->vp[3 * i + a] = s->v[3 * i + a] + h * s->f[3 * i + a];
       }
     }
+    if (s->rot) rotation_kick(s, 1);
     s->steps++;
     s->t = s->t0 + (double)s->steps * dt; /* no accumulated round-off */
     if (need_rebuild(s)) {
       int st = build_list(s);
       if (st != WG_OK) return st;
     }
-    forces(s, s->vp);
+    forces(s, s->vp, s->v);
     for (long i = 0; i < s->n; i++) {
       double h = 0.5 * dt / td_mass(s, i);
       for (int a = 0; a < s->par.dim; a++) s->v[3 * i + a] += h * s->f[3 * i + a];
     }
+    if (s->rot) rotation_kick(s, 0);
     ksum_add(&s->injected_wall, 0.5 * (p_wall0 + s->p_wall) * dt);
     ksum_add(&s->dissipated, 0.5 * (p_diss0 + s->p_diss) * dt);
     ksum_add(&s->dissipated_wall, 0.5 * (p_diss_wall0 + s->p_diss_wall) * dt);
@@ -391,7 +538,7 @@ static int gear_advance(wg_td *s, double t_stop)
       int st = build_list(s);
       if (st != WG_OK) return st;
     }
-    forces(s, s->v);
+    forces(s, s->v, NULL);
     for (long i = 0; i < s->n; i++) {
       double h = 0.5 * dt * dt / td_mass(s, i);
       for (int a = 0; a < dim; a++) {
@@ -426,6 +573,11 @@ void wg_td_energy(const wg_td *s, double *kinetic, double *potential)
     k += 0.5 * td_mass(s, i) * v2;
     u += td_mass(s, i) * s->par.g * s->r[3 * i + s->up];
   }
+  if (s->rot)
+    for (long i = 0; i < s->n; i++) {
+      const double *w = &s->w[3 * i];
+      k += 0.5 * wg_inertia(s->par.dim, td_mass(s, i), s->radius[i]) * (w[0] * w[0] + w[1] * w[1] + w[2] * w[2]);
+    }
   *kinetic = k;
   *potential = u + s->u_contact + s->u_bond;
 }
@@ -461,6 +613,8 @@ double wg_td_bytes_per_particle(const wg_td *s)
 {
   double per = 6 * 3 * sizeof(double) + 2 * sizeof(double) + 1; /* r v f vp r_built; radius mass */
   if (s->gear) per += 12 * sizeof(double);
+  if (s->rot) per += 9 * sizeof(double) + 2 * sizeof(wg_spring) +
+                     (double)s->pair_cap * sizeof(wg_spring) / (double)(s->n > 0 ? s->n : 1);
   return per + (double)s->pair_cap * sizeof(wg_td_pair) / (double)(s->n > 0 ? s->n : 1) +
          3 * sizeof(int32_t);
 }
@@ -499,6 +653,8 @@ void wg_td_params_from_scene(const wg_scene *sc, wg_td_params *out)
   p.dt = sc->dt;
   p.skin = sc->skin;
   p.integrator = sc->integrator;
+  p.fric = (wg_friction){sc->mu, sc->kt_ratio, sc->gt_ratio, sc->mu_roll};
+  p.fric_wall = (wg_friction){sc->mu_wall, sc->kt_ratio, sc->gt_ratio, sc->mu_roll};
   *out = p;
 }
 

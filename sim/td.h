@@ -9,9 +9,14 @@
    bond breaks.  Its potential is F_B * gap (zero at contact), so a rupture takes F_B s_crit
    = E_cb from the pair, as in the thin-thread model.
 
-   Energy ledger: kinetic + gravitational + elastic + bond energy now, minus that at t = 0,
-   equals the work of the walls minus the dissipation (dashpots, and the bond energy taken by
-   ruptures); the integrals are sampled at every force evaluation.  A contact that starts
+   Friction (mu > 0 or mu_wall > 0, friction.h): tangential springs with Coulomb's bound at
+   every contact, torques, and rotation of uniform disks or spheres, integrated by Verlet as
+   the velocities are (Gear has no rotation).
+
+   Energy ledger: kinetic (with rotation) + gravitational + elastic (with the tangential
+   springs) + bond energy now, minus that at t = 0, equals the work of the walls minus the
+   dissipation (dashpots, slip, and the bond energy taken by ruptures); the integrals are
+   sampled at every force evaluation.  A contact that starts
    between two steps costs an energy error ~ (pi dt / t_c)^2 of the pair's energy, so the
    residual falls faster than dt (measured: by 2.7 when dt halves; tests/test_td.c). */
 #ifndef WG_TD_H
@@ -20,6 +25,7 @@
 #include "cells.h"
 #include "contact.h"
 #include "ed.h"   /* wg_ksum */
+#include "friction.h"
 #include "wall.h"
 
 typedef struct wg_td_params {
@@ -38,12 +44,14 @@ typedef struct wg_td_params {
   double dt;               /* time step [sqrt(d/g)] */
   double skin;             /* neighbour-list skin [d] */
   int integrator;          /* WG_TD_VERLET or WG_TD_GEAR */
+  wg_friction fric, fric_wall; /* tangential forces (friction.h); mu = 0 on both: no
+                              rotation, no spring history */
 } wg_td_params;
 
 enum { WG_TD_VERLET = 0, WG_TD_GEAR = 1 };
 
 /* A pair in the neighbour list.  Its state outlives list rebuilds (carried over by identity):
-   the bond, and room for a tangential spring's history when friction is added. */
+   the bond, the contact and (with friction) the tangential spring in wg_td.spring. */
 typedef struct wg_td_pair {
   int32_t i, j;            /* i < j */
   uint8_t bonded;
@@ -59,6 +67,10 @@ typedef struct wg_td {
   double *gear;            /* Gear only: scaled derivatives dt^k/k! d^k r/dt^k, k = 2..5
                               (n x 3 x 4); NULL for Verlet */
   double *radius, *mass;   /* mass NULL: every mass is 1 */
+  double *w, *wp, *tq;     /* with friction: angular velocities, their prediction at the full
+                              step and torques (n x 3; 2D: z only); NULL without */
+  wg_spring *spring;       /* with friction: the spring of pair[k] (pair_cap); NULL without */
+  wg_spring *wall_spring;  /* with friction: particle i's spring on wall w at 2 i + w */
   double *r_built;         /* positions at the last list build (n x 3) */
   uint8_t *wall_touch;     /* bit w: touching wall w at the last force evaluation;
                               bit w + 2: bonded to wall w */
@@ -74,6 +86,7 @@ typedef struct wg_td {
   double e0;
   double u_contact, u_bond; /* elastic and bond energy at the last force evaluation */
   double p_wall, p_diss, p_diss_wall; /* their powers there (dashpots: particle, wall) */
+  int rot;                  /* friction on: rotation and springs */
 } wg_td;
 
 /* The engine's parameters for a finished scene: container, gravity, driving; the contact
@@ -95,6 +108,10 @@ void wg_td_free(wg_td *s);
    reach of a bridge) and recompute forces and the ledger's E(0): a run continued from
    another's last snapshot. */
 int wg_td_set_bonds(wg_td *s, const int32_t *pairs, long nb);
+
+/* Set the angular velocities (n x 3; 2D: z only) of a run with friction and recompute
+   forces and the ledger's E(0): bodies spinning at the start. */
+int wg_td_set_angular_velocities(wg_td *s, const double *w);
 
 /* Advance by whole steps of dt until t >= t_stop (to within dt / 2). */
 int wg_td_advance(wg_td *s, double t_stop);

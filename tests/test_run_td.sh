@@ -55,6 +55,23 @@ check "Gear: the run file records the integrator" bash -c "h5dump -A -g /paramet
 res=$(field ledger_residual "$tmp/ga/err")
 check "Gear, wet shaken run: energy ledger closes to $res (< 1e-2: bond switches cost O(dt))" lt "$res" 1e-2
 
+# friction: angular velocities and tangential springs are part of the checkpoint
+rough="mu=0.5 gt_ratio=0.5 t_end=3 dt_checkpoint=1"
+runin "$tmp/fa" --no-volatile $rough
+runin "$tmp/fr" --no-volatile $rough --abort-after-checkpoint 1
+runin "$tmp/fr" --no-volatile $rough
+check "friction: a resumed run is byte-identical to the uninterrupted one" cmp -s "$tmp/fa/run.h5" "$tmp/fr/run.h5"
+check "friction: snapshots hold the angular velocities (2D: about z)" \
+  bash -c "h5dump -H -d /particles/all/angular_velocity/value '$tmp/fa/run.h5' | grep -q '( 3, 300 )'"
+check "frictionless runs have none" bash -c "! h5dump -H -d /particles/all/angular_velocity/value '$tmp/a/run.h5' > /dev/null 2>&1"
+spin=$(h5dump -d /particles/all/angular_velocity/value "$tmp/fa/run.h5" | awk -F'[,:]' '/^ *\(1,/ { for (k = 3; k <= NF; k++) { x = $k + 0; s += x < 0 ? -x : x; n++ } } END { print s / n }')
+check "friction: the disks spin (mean |w| $spin > 0.05 at t = 2)" lt 0.05 "$spin"
+res=$(field ledger_residual "$tmp/fa/err")
+check "friction, wet shaken run: energy ledger closes to $res (< 1e-3)" lt "$res" 1e-3
+"$run" "$scenes/shake2d_td.ini" mu=0.5 integrator=gear -o "$tmp/x.h5" 2> "$tmp/e7"; rc=$?
+check "friction with Gear is refused, naming both keys" \
+  bash -c "[ $rc -ne 0 ] && grep -qE \"keys 'mu' and 'integrator'.*verlet\" '$tmp/e7'"
+
 # keys of the other engine, and inconsistent contact or bridge keys: clear errors
 "$run" "$scenes/shake2d_td.ini" tc=1e-5 -o "$tmp/x.h5" 2> "$tmp/e1"; rc=$?
 check "an event-driven key in a time-driven scene is refused, naming both keys" \

@@ -281,7 +281,7 @@ static void test_visit_and_help(void)
            "visit: 34 keys (the event-driven engine's) then 3 derived entries (count %d, last %s)",
            log.count, log.last);
   {
-    /* the time-driven engine: its 9 keys instead of the 2 event-driven ones, and dt;
+    /* the time-driven engine: its 15 keys instead of the 2 event-driven ones, and dt;
        with contact = hertz also Hertz's K */
     wg_scene td = sc;
     visit_log lt = {0};
@@ -290,8 +290,8 @@ static void test_visit_and_help(void)
     r2 = r2 ? r2 : wg_scene_set_override(&td, "grazing_angle=");
     r2 = r2 ? r2 : wg_scene_finish(&td);
     r2 = r2 ? r2 : wg_scene_visit(&td, record, &lt);
-    TH_CHECK(r2 == WG_OK && lt.count == 34 - 2 + 10 + 3 + 1 && strcmp(lt.last, "dt") == 0,
-             "visit, engine = td: 42 keys then 4 derived entries (count %d, last %s)", lt.count, lt.last);
+    TH_CHECK(r2 == WG_OK && lt.count == 34 - 2 + 15 + 3 + 1 && strcmp(lt.last, "dt") == 0,
+             "visit, engine = td: 47 keys then 4 derived entries (count %d, last %s)", lt.count, lt.last);
     TH_CLOSE("engine = td: dt = t_contact / steps_per_contact", td.dt, 0.005 / 50, 1e-12, 0);
   }
   TH_CHECK(strcmp(log.gamma, "15") == 0 && strcmp(log.container, "shaker") == 0,

@@ -9,6 +9,7 @@
 
 #include "tharness.h"
 #include "td.h"
+#include "td_bed.h"
 
 /* 2D, periodic 20 x 20 box, no gravity, no walls; the linear law with e, t_c. */
 static wg_td_params free_params(double e, double t_c)
@@ -165,27 +166,8 @@ static double shaken_bed_residual(double dt_factor, unsigned long long *ruptures
   wg_td_params p = free_params(0.8, 0.01);
   p.integrator = integrator;
   p.dt = 0.01 / dt_factor;
-  p.periodic[1] = 0;
-  p.lo[1] = -1;
-  p.hi[1] = 12;
-  p.g = 1;
-  p.nwalls = 2;
-  double gamma = 3, a = 0.3, w = sqrt(gamma / a);
-  p.wall[0] = (wg_wall){.c = 0, .A = a, .omega = w, .side = +1};
-  p.wall[1] = (wg_wall){.c = 10, .A = a, .omega = w, .side = -1};
-  p.pw = wg_contact_linear(0.9, 0.01, 1.0);
-  p.f_b = 4;
-  p.s_crit = 0.0711;
   double r[180], v[180], rad[60];
-  for (int k = 0; k < 60; k++) {
-    r[3 * k] = 0.5 + (k % 20);
-    r[3 * k + 1] = 0.9 + 1.1 * (k / 20);
-    r[3 * k + 2] = 0;
-    v[3 * k] = 0.3 * sin(1.7 * k);
-    v[3 * k + 1] = 0.3 * cos(2.3 * k);
-    v[3 * k + 2] = 0;
-    rad[k] = 0.45 + 0.01 * (k % 7);
-  }
+  shaken_bed(&p, r, v, rad);
   wg_td s;
   if (wg_td_alloc_state(&s, &p, 60, r, v, rad, NULL, 0) != WG_OK) return NAN;
   wg_td_advance(&s, 4);

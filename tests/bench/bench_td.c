@@ -45,7 +45,7 @@ static int scene(wg_scene *sc, const char *const *kv)
   return wg_scene_finish(sc) != WG_OK;
 }
 
-static void td_bed(const char *name, const char *const *kv, double t_sim)
+static double td_bed(const char *name, const char *const *kv, double t_sim)
 {
   wg_scene sc;
   if (scene(&sc, kv)) exit(1);
@@ -60,6 +60,7 @@ static void td_bed(const char *name, const char *const *kv, double t_sim)
   printf("# %s: %llu steps, %llu list rebuilds, %ld pairs in the list, %ld bonds, ledger residual %.2e\n",
          name, s.steps - steps0, s.rebuilds, s.npair, wg_td_bond_total(&s), wg_td_ledger_residual(&s));
   wg_td_free(&s);
+  return ps / w;
 }
 
 /* Two unit-mass disks of diameter 1 in a periodic 2D box, approaching (u < 0) or separating
@@ -120,8 +121,13 @@ int main(int argc, char **argv)
   const char *bed_wet[] = {"engine=td", "dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
                            "eps=0.9", "eps_wall=0.9", "gamma=4", "estar=2", "s_crit=0.0711",
                            "f_b=16", "tg_init=1", "seed=1", "t_end=1", NULL};
-  td_bed("bed3d_N1e4_dry", bed_dry, t3);
+  const char *bed_rough[] = {"engine=td", "dim=3", "n=10000", "lx=55.57", "ly=55.57", "height=8", "sigma_p=0.06",
+                             "eps=0.9", "eps_wall=0.9", "gamma=4", "estar_d=2", "tg_init_abs=1",
+                             "seed=1", "t_end=1", "mu=0.5", "gt_ratio=0.5", NULL};
+  double dry = td_bed("bed3d_N1e4_dry", bed_dry, t3);
   td_bed("bed3d_N1e4_wet", bed_wet, t3);
+  double rough = td_bed("bed3d_N1e4_friction", bed_rough, t3);
+  printf("# bed3d_N1e4: friction (mu = 0.5, rotation, spring history) costs %.2f x the frictionless step\n", dry / rough);
 
   const char *coex[] = {"dim=2", "n=1200", "lx=400", "height=9", "sigma_p=0.06", "s_crit=0.0711",
                         "f_b=4", "gamma=15", "estar=1.42", "tg_init=20", "seed=1", "t_end=100", NULL};
