@@ -17,30 +17,11 @@
 static wg_td_params rough_params(int dim, double e, double t_c, double mu, double kt, double gt)
 {
   wg_td_params p;
-  memset(&p, 0, sizeof p);
-  p.dim = dim;
-  for (int a = 0; a < dim; a++) {
-    p.box[a] = 20;
-    p.periodic[a] = 1;
-  }
+  periodic_box(&p, dim, t_c / 50);
   p.pp = wg_contact_linear(e, t_c, 0.5);
   p.pw = wg_contact_linear(e, t_c, 1.0);
   p.fric = p.fric_wall = (wg_friction){mu, kt, gt, 0};
-  p.dt = t_c / 50;
-  p.skin = 0.2;
   return p;
-}
-
-/* Gravity and a resting floor at 0 under the vertical axis. */
-static void on_floor(wg_td_params *p)
-{
-  int up = p->dim - 1;
-  p->periodic[up] = 0;
-  p->lo[up] = -1;
-  p->hi[up] = 10;
-  p->g = 1;
-  p->nwalls = 1;
-  p->wall[0] = (wg_wall){.c = 0, .A = 0, .omega = 1, .side = +1};
 }
 
 /* A disk (2D) or sphere (3D) set on a resting floor at its static overlap, sliding along x at
@@ -52,7 +33,7 @@ static void slide_to_roll(int dim)
   double mu = 0.3, v0 = 2, R = 0.5, t_c = 0.01;
   wg_td_params p = rough_params(dim, 0.5, t_c, mu, 2.0 / 7, 1); /* damped: rolls steadily */
   int up = dim - 1;
-  on_floor(&p);
+  resting_floor(&p, 10);
   double r[3] = {5, 5, 5}, v[3] = {v0, 0, 0}, rad[1] = {R};
   r[up] = R - 1 / p.pw.k; /* the static overlap m g / k */
   wg_td s;
@@ -137,7 +118,7 @@ static void rolling_stops(int dim)
   p.fric.mu_roll = p.fric_wall.mu_roll = mu_r;
   int up = dim - 1, wz = dim == 2 ? 2 : 1;
   double sgn = dim == 2 ? 1 : -1, c = dim == 2 ? 0.5 : 0.4;
-  on_floor(&p);
+  resting_floor(&p, 10);
   double r[3] = {5, 5, 5}, v[3] = {v0, 0, 0}, rad[1] = {R};
   r[up] = R - 1 / p.pw.k;
   wg_td s;

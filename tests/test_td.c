@@ -15,13 +15,8 @@
 static wg_td_params free_params(double e, double t_c)
 {
   wg_td_params p;
-  memset(&p, 0, sizeof p);
-  p.dim = 2;
-  p.box[0] = p.box[1] = 20;
-  p.periodic[0] = p.periodic[1] = 1;
+  periodic_box(&p, 2, t_c / 50);
   p.pp = p.pw = wg_contact_linear(e, t_c, 0.5);
-  p.dt = t_c / 50;
-  p.skin = 0.2;
   return p;
 }
 
@@ -100,12 +95,7 @@ static void hertz_contact(void)
 static void floor_bounce(void)
 {
   wg_td_params p = free_params(1.0, 0.01);
-  p.periodic[1] = 0;
-  p.lo[1] = -1;
-  p.hi[1] = 30;
-  p.g = 1;
-  p.nwalls = 1;
-  p.wall[0] = (wg_wall){.c = 0, .A = 0, .omega = 1, .side = +1};
+  resting_floor(&p, 30);
   p.pw = wg_contact_linear(0.8, 0.01, 1.0);
   double r[3] = {10, 5.5, 0}, v[3] = {0, 0, 0}, rad[1] = {0.5};
   wg_td s;

@@ -15,7 +15,8 @@
    Output: tab-separated rows  case, engine, n, sim_time, wall_s, rate, unit; then the
    ratio; then the accuracy table (k, dt, mean relative errors of restitution and rupture
    energy over 8 phases of the contact against the step grid, microseconds of CPU per time
-   unit of a two-body run).  Usage: bench_td [sim_time_3d [sim_time_2d]]. */
+   unit of a two-body run); then the same for friction (friction_table).
+   Usage: bench_td [sim_time_3d [sim_time_2d]]. */
 #define _POSIX_C_SOURCE 200809L
 
 #include <math.h>
@@ -26,6 +27,7 @@
 
 #include "ed.h"
 #include "td.h"
+#include "td_bed.h"
 
 #define SETTLE 5.0   /* time units before the 3D bed is timed */
 #define WARM 100.0   /* time units of the event-driven run before the comparison */
@@ -84,13 +86,8 @@ static void accuracy_table(void)
   const int ks[] = {10, 20, 50, 100, 200, 400};
   for (int q = 0; q < 12; q++) {
     wg_td_params p;
-    memset(&p, 0, sizeof p);
+    periodic_box(&p, 2, t_c / ks[q % 6]);
     p.integrator = q < 6 ? WG_TD_VERLET : WG_TD_GEAR;
-    p.dim = 2;
-    p.box[0] = p.box[1] = 20;
-    p.periodic[0] = p.periodic[1] = 1;
-    p.dt = t_c / ks[q % 6];
-    p.skin = 0.2;
     /* contacts start and end anywhere between steps: errors are averaged over 8 phases of
        the start against the step grid (the pair closes by 2 dt per step) */
     double w0 = now_s(), err_e = 0, err_b = 0;
@@ -108,6 +105,51 @@ static void accuracy_table(void)
     }
     double w = (now_s() - w0) / 16; /* per pair run of one time unit */
     printf("%d\t%.3g\t%.3e\t%.3e\t%.1f\t%s\n", ks[q % 6], p.dt, err_e, err_b, 1e6 * w, q < 6 ? "verlet" : "gear");
+  }
+}
+
+/* Friction against its closed forms as dt = t_c / k: (a) two elastic spheres meeting
+   off-centre with a sticking, undamped tangential spring (k_t = 2/7 k_n) leave with their
+   contact point's tangential velocity reversed exactly (beta = 1; test_friction.c), averaged
+   over 8 phases of the contact's start against the step grid; (b) a sphere sliding on a
+   floor (mu = 0.3, v0 = 2) rolls on at 5/7 v0. */
+static void friction_table(void)
+{
+  double t_c = 0.005;
+  printf("# friction accuracy against cost, t_c = %g (velocity Verlet)\n", t_c);
+  printf("k\tdt\ttangential_restitution_err\trolling_speed_rel_err\tus_per_time_unit\n");
+  const int ks[] = {10, 20, 50, 100, 200, 400};
+  for (int q = 0; q < 6; q++) {
+    wg_td_params p;
+    periodic_box(&p, 3, t_c / ks[q]);
+    p.pp = wg_contact_linear(1.0, t_c, 0.5);
+    p.pw = wg_contact_linear(0.5, t_c, 1.0);
+    p.fric = p.fric_wall = (wg_friction){1e6, 2.0 / 7, 0, 0};
+    double w0 = now_s(), err_b = 0, t_run = 0;
+    for (int j = 0; j < 8; j++) {
+      double gap0 = 0.02 + 1.0 * p.dt * (j + 0.5) / 8; /* the pair closes by 1 per time unit */
+      double r[6] = {8, 10, 10, 9 + gap0, 10, 10}, v[6] = {0.5, 0.2, 0, -0.5, -0.2, 0}, rad[2] = {0.5, 0.5};
+      wg_td s;
+      if (wg_td_alloc_state(&s, &p, 2, r, v, rad, NULL, 0) != WG_OK) exit(1);
+      wg_td_advance(&s, 0.1);
+      t_run += 0.1;
+      double vt = s.v[4] - s.v[1] - 0.5 * (s.w[2] + s.w[5]);
+      err_b += fabs(-vt / -0.4 - 1) / 8;
+      wg_td_free(&s);
+    }
+    /* a sphere sliding on a floor */
+    resting_floor(&p, 10);
+    p.fric = p.fric_wall = (wg_friction){0.3, 2.0 / 7, 1, 0};
+    double r[3] = {5, 5, 0.5 - 1 / p.pw.k}, v[3] = {2, 0, 0}, rad[1] = {0.5};
+    wg_td s;
+    if (wg_td_alloc_state(&s, &p, 1, r, v, rad, NULL, 0) != WG_OK) exit(1);
+    double t_roll = 2 * (1 - 5.0 / 7) / 0.3;
+    wg_td_advance(&s, 2 * t_roll);
+    t_run += 2 * t_roll;
+    double err_v = fabs(s.v[0] / 2 - 5.0 / 7) / (5.0 / 7);
+    wg_td_free(&s);
+    double w = (now_s() - w0) / t_run;
+    printf("%d\t%.3g\t%.3e\t%.3e\t%.1f\n", ks[q], p.dt, err_b, err_v, 1e6 * w);
   }
 }
 
@@ -168,5 +210,6 @@ int main(int argc, char **argv)
   free(v);
   free(rad);
   accuracy_table();
+  friction_table();
   return 0;
 }
