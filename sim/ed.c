@@ -301,6 +301,10 @@ static void predict_walls(wg_ed *s, long i, candidate *best)
     wg_wall_outcome out = wg_wall_next_event(&s->wall[w], &traj, &tau, &s->wall_stats);
     if (out == WG_WALL_NONE) continue;
     double t = p->t + tau;
+    /* an entry closer than the clock resolves (t ~ 10^4 and |v| ~ 10^2: 3.6e-12 apart, a
+       displacement of 10^-9) would repeat at the same instant forever: step to the next
+       representable time, where the particle is inside */
+    if (out == WG_WALL_ENTER && !(t > p->t)) t = nextafter(p->t, INFINITY);
     consider(best, t > s->now ? t : s->now, out == WG_WALL_HIT ? WG_EV_WALL_HIT : WG_EV_WALL_ENTER, w);
   }
 }

@@ -403,6 +403,11 @@ static int ckpt_write_td(wg_run *run, hid_t f)
     st |= wg_h5_write(f, "state/gear", H5T_NATIVE_DOUBLE, 2, dg, s->gear, "d",
                       "Gear's scaled derivatives dt^k/k! d^k r/dt^k, k = 2..5, per axis");
   }
+  if (s->gear_w) {
+    hsize_t dg[2] = {(hsize_t)n, 12};
+    st |= wg_h5_write(f, "state/gear_w", H5T_NATIVE_DOUBLE, 2, dg, s->gear_w, "1",
+                      "Gear's scaled derivatives dt^k/k! d^k w/dt^k, k = 1..4, per axis");
+  }
   if (s->rot) {
     hsize_t dw[2] = {2 * (hsize_t)n, 4};
     st |= wg_h5_write(f, "state/w", H5T_NATIVE_DOUBLE, 2, d2, s->w, "sqrt(g/d)", "angular velocities");
@@ -578,6 +583,7 @@ static int ckpt_load_td(wg_run *run, hid_t f, long n)
   if (st == WG_OK) st = read_into(f, ck, "state/f", H5T_NATIVE_DOUBLE, s->f, n3);
   if (st == WG_OK) st = read_into(f, ck, "state/r_built", H5T_NATIVE_DOUBLE, s->r_built, n3);
   if (st == WG_OK && s->gear) st = read_into(f, ck, "state/gear", H5T_NATIVE_DOUBLE, s->gear, 4 * n3);
+  if (st == WG_OK && s->gear_w) st = read_into(f, ck, "state/gear_w", H5T_NATIVE_DOUBLE, s->gear_w, 4 * n3);
   if (st == WG_OK) st = read_into(f, ck, "state/wall_touch", H5T_NATIVE_UINT8, s->wall_touch, (hsize_t)n);
   int rank;
   hsize_t dims[8] = {0};

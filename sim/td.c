@@ -141,9 +141,11 @@ static int need_rebuild(const wg_td *s)
 
 /* Forces at the current positions and the velocities vel (in Verlet: predicted at the full
    step), the bond updates they imply, and the energies and powers for the ledger.  vhalf:
-   the velocities over the step just taken (Verlet's half-step ones), which move the
-   tangential springs; NULL at an evaluation that follows no step. */
-static void forces(wg_td *s, const double *vel, const double *vhalf)
+   the velocities over the step just taken (Verlet's half-step ones; Gear's mean ones), which
+   move the tangential springs; NULL at an evaluation that follows no step.  With friction,
+   wvel and whalf are the same for the angular velocities (whalf unused when vhalf is NULL). */
+static void forces(wg_td *s, const double *vel, const double *vhalf, const double *wvel,
+                   const double *whalf)
 {
   int dim = s->par.dim, up = s->up, wet = s->par.f_b > 0;
   memset(s->f, 0, sizeof *s->f * 3 * (size_t)s->n);
@@ -151,7 +153,7 @@ static void forces(wg_td *s, const double *vel, const double *vhalf)
   double half = s->par.integrator == WG_TD_VERLET ? 0.5 : 0;
   for (long i = 0; i < s->n; i++) s->f[3 * i + up] = -s->par.g * td_mass(s, i);
   const wg_friction *fr = s->rot && s->par.fric.mu > 0 ? &s->par.fric : NULL;
-  const double *wv = s->rot ? (vhalf ? s->wp : s->w) : NULL, *whalf = s->w;
+  const double *wv = wvel;
   if (s->rot) memset(s->tq, 0, sizeof *s->tq * 3 * (size_t)s->n);
   for (long k = 0; k < s->npair; k++) {
     wg_td_pair *p = &s->pair[k];
@@ -329,7 +331,8 @@ static void forces(wg_td *s, const double *vel, const double *vhalf)
   s->p_diss_wall = p_diss_wall;
 }
 
-/* Gear: the second derivative from the forces now, the higher ones zero. */
+/* Gear: the second derivative from the forces now (and the first of w from the torques),
+   the higher ones zero. */
 static void gear_start(wg_td *s)
 {
   if (!s->gear) return;
@@ -338,6 +341,11 @@ static void gear_start(wg_td *s)
   for (long i = 0; i < s->n; i++)
     for (int a = 0; a < s->par.dim; a++)
       s->gear[12 * i + 4 * a] = 0.5 * dt * dt * s->f[3 * i + a] / td_mass(s, i);
+  if (!s->gear_w) return;
+  memset(s->gear_w, 0, sizeof *s->gear_w * 12 * (size_t)s->n);
+  for (long i = 0; i < s->n; i++)
+    for (int a = 0; a < 3; a++)
+      s->gear_w[12 * i + 4 * a] = dt * s->tq[3 * i + a] / wg_inertia(s->par.dim, td_mass(s, i), s->radius[i]);
 }
 
 int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r,
@@ -359,11 +367,12 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
   if (mass) s->mass = malloc(sizeof *s->mass * (size_t)n);
   if (par->integrator == WG_TD_GEAR) s->gear = calloc(4 * n3, sizeof *s->gear);
   s->rot = par->fric.mu > 0 || par->fric_wall.mu > 0;
-  if (s->rot && par->integrator != WG_TD_VERLET) {
+  if (s->gear && (par->fric.mu_roll > 0 || par->fric_wall.mu_roll > 0)) {
     wg_td_free(s);
-    return wg_error(WG_EINVAL, "td", "friction needs the Verlet integrator (Gear has no rotation)");
+    return wg_error(WG_EINVAL, "td", "rolling resistance needs the Verlet integrator");
   }
   if (s->rot) {
+    if (s->gear) s->gear_w = calloc(4 * n3, sizeof *s->gear_w);
     s->w = calloc(n3, sizeof *s->w);
     s->wp = calloc(n3, sizeof *s->wp);
     s->tq = calloc(n3, sizeof *s->tq);
@@ -371,7 +380,7 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
   }
   if (!s->r || !s->v || !s->f || !s->vp || !s->r_built || !s->wall_touch || !s->radius ||
       (mass && !s->mass) || (par->integrator == WG_TD_GEAR && !s->gear) ||
-      (s->rot && (!s->w || !s->wp || !s->tq || !s->wall_spring))) {
+      (s->rot && (!s->w || !s->wp || !s->tq || !s->wall_spring || (s->gear && !s->gear_w)))) {
     wg_td_free(s);
     return wg_error(WG_ENOMEM, "td", "cannot allocate %ld particles", n);
   }
@@ -395,7 +404,7 @@ int wg_td_alloc_state(wg_td *s, const wg_td_params *par, long n, const double *r
     wg_td_free(s);
     return st;
   }
-  forces(s, s->v, NULL);
+  forces(s, s->v, NULL, s->w, NULL);
   gear_start(s);
   double k, u;
   wg_td_energy(s, &k, &u);
@@ -416,7 +425,7 @@ int wg_td_set_bonds(wg_td *s, const int32_t *pairs, long nb)
       return wg_error(WG_EINVAL, "td", "bridge %d-%d: the pair is not within reach of a bridge", q.i, q.j);
     found->bonded = 1;
   }
-  forces(s, s->v, NULL);
+  forces(s, s->v, NULL, s->w, NULL);
   gear_start(s);
   double k, u;
   wg_td_energy(s, &k, &u);
@@ -430,7 +439,8 @@ int wg_td_set_angular_velocities(wg_td *s, const double *w)
   if (!s->rot) return wg_error(WG_EINVAL, "td", "angular velocities given, but the run has no friction");
   for (long i = 0; i < s->n; i++)
     for (int a = s->par.dim == 2 ? 2 : 0; a < 3; a++) s->w[3 * i + a] = w[3 * i + a];
-  forces(s, s->v, NULL);
+  forces(s, s->v, NULL, s->w, NULL);
+  gear_start(s);
   double k, u;
   wg_td_energy(s, &k, &u);
   s->e0 = k + u;
@@ -444,6 +454,7 @@ void wg_td_free(wg_td *s)
   free(s->f);
   free(s->vp);
   free(s->gear);
+  free(s->gear_w);
   free(s->r_built);
   free(s->wall_touch);
   free(s->radius);
@@ -496,7 +507,7 @@ static int verlet_advance(wg_td *s, double t_stop)
       int st = build_list(s);
       if (st != WG_OK) return st;
     }
-    forces(s, s->vp, s->v);
+    forces(s, s->vp, s->v, s->wp, s->w);
     for (long i = 0; i < s->n; i++) {
       double h = 0.5 * dt / td_mass(s, i);
       for (int a = 0; a < s->par.dim; a++) s->v[3 * i + a] += h * s->f[3 * i + a];
@@ -513,32 +524,47 @@ static int verlet_advance(wg_td *s, double t_stop)
    scaled derivatives q_k = dt^k/k! d^k r/dt^k, k = 1..5; q_1 = dt v).  Predict by the
    Taylor series (Pascal's triangle), evaluate the forces at the predicted r and v, and
    correct every value by c_k times the misfit of q_2, with the coefficients for
-   velocity-dependent forces (c_0 = 3/16; Allen and Tildesley, App. E). */
+   velocity-dependent forces (c_0 = 3/16; Allen and Tildesley, App. E).  With friction the
+   angular velocities follow w' = tau/I the same way, five values (w and dt^k/k! d^k w/dt^k,
+   k = 1..4) with the first-order coefficients; the springs move by the predicted
+   displacement of the contact points, i.e. by the mean velocities over the step. */
 static int gear_advance(wg_td *s, double t_stop)
 {
   static const double c[6] = {3.0 / 16, 251.0 / 360, 1, 11.0 / 18, 1.0 / 6, 1.0 / 60};
+  static const double cw[5] = {251.0 / 720, 1, 11.0 / 12, 1.0 / 3, 1.0 / 24};
   double dt = s->par.dt, inv_dt = 1 / dt;
-  int dim = s->par.dim;
+  int dim = s->par.dim, a0 = dim == 2 ? 2 : 0;
   while (s->t < t_stop - 0.5 * dt) {
     double p_wall0 = s->p_wall, p_diss0 = s->p_diss, p_diss_wall0 = s->p_diss_wall;
     for (long i = 0; i < s->n; i++)
       for (int a = 0; a < dim; a++) {
         double *q = &s->gear[12 * i + 4 * a]; /* q[0..3] = q_2..q_5 */
-        double q1 = dt * s->v[3 * i + a];
-        s->r[3 * i + a] += q1 + q[0] + q[1] + q[2] + q[3];
+        double q1 = dt * s->v[3 * i + a], dr = q1 + q[0] + q[1] + q[2] + q[3];
+        s->r[3 * i + a] += dr;
+        s->vp[3 * i + a] = dr * inv_dt;
         q1 += 2 * q[0] + 3 * q[1] + 4 * q[2] + 5 * q[3];
         q[0] += 3 * q[1] + 6 * q[2] + 10 * q[3];
         q[1] += 4 * q[2] + 10 * q[3];
         q[2] += 5 * q[3];
         s->v[3 * i + a] = q1 * inv_dt;
       }
+    if (s->rot)
+      for (long i = 0; i < s->n; i++)
+        for (int a = a0; a < 3; a++) {
+          double *q = &s->gear_w[12 * i + 4 * a], *w = &s->w[3 * i + a]; /* q[0..3]: k = 1..4 */
+          s->wp[3 * i + a] = *w + q[0] / 2 + q[1] / 3 + q[2] / 4 + q[3] / 5; /* mean over the step */
+          *w += q[0] + q[1] + q[2] + q[3];
+          q[0] += 2 * q[1] + 3 * q[2] + 4 * q[3];
+          q[1] += 3 * q[2] + 6 * q[3];
+          q[2] += 4 * q[3];
+        }
     s->steps++;
     s->t = s->t0 + (double)s->steps * dt;
     if (need_rebuild(s)) {
       int st = build_list(s);
       if (st != WG_OK) return st;
     }
-    forces(s, s->v, NULL);
+    forces(s, s->v, s->vp, s->w, s->wp);
     for (long i = 0; i < s->n; i++) {
       double h = 0.5 * dt * dt / td_mass(s, i);
       for (int a = 0; a < dim; a++) {
@@ -552,6 +578,16 @@ static int gear_advance(wg_td *s, double t_stop)
         q[3] += c[5] * miss;
       }
     }
+    if (s->rot)
+      for (long i = 0; i < s->n; i++) {
+        double h = dt / wg_inertia(dim, td_mass(s, i), s->radius[i]);
+        for (int a = a0; a < 3; a++) {
+          double *q = &s->gear_w[12 * i + 4 * a];
+          double miss = h * s->tq[3 * i + a] - q[0];
+          s->w[3 * i + a] += cw[0] * miss;
+          for (int k = 0; k < 4; k++) q[k] += cw[k + 1] * miss;
+        }
+      }
     ksum_add(&s->injected_wall, 0.5 * (p_wall0 + s->p_wall) * dt);
     ksum_add(&s->dissipated, 0.5 * (p_diss0 + s->p_diss) * dt);
     ksum_add(&s->dissipated_wall, 0.5 * (p_diss_wall0 + s->p_diss_wall) * dt);
@@ -613,6 +649,7 @@ double wg_td_bytes_per_particle(const wg_td *s)
 {
   double per = 6 * 3 * sizeof(double) + 2 * sizeof(double) + 1; /* r v f vp r_built; radius mass */
   if (s->gear) per += 12 * sizeof(double);
+  if (s->gear_w) per += 12 * sizeof(double);
   if (s->rot) per += 9 * sizeof(double) + 2 * sizeof(wg_spring) +
                      (double)s->pair_cap * sizeof(wg_spring) / (double)(s->n > 0 ? s->n : 1);
   return per + (double)s->pair_cap * sizeof(wg_td_pair) / (double)(s->n > 0 ? s->n : 1) +

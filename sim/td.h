@@ -10,8 +10,8 @@
    = E_cb from the pair, as in the thin-thread model.
 
    Friction (mu > 0 or mu_wall > 0, friction.h): tangential springs with Coulomb's bound at
-   every contact, torques, and rotation of uniform disks or spheres, integrated by Verlet as
-   the velocities are (Gear has no rotation).
+   every contact, torques, and rotation of uniform disks or spheres, integrated as the
+   velocities are (Verlet's kicks, or Gear's predictor-corrector for w' = tau / I).
 
    Energy ledger: kinetic (with rotation) + gravitational + elastic (with the tangential
    springs) + bond energy now, minus that at t = 0, equals the work of the walls minus the
@@ -66,6 +66,7 @@ typedef struct wg_td {
   double *vp;              /* velocities predicted at the full step (n x 3) */
   double *gear;            /* Gear only: scaled derivatives dt^k/k! d^k r/dt^k, k = 2..5
                               (n x 3 x 4); NULL for Verlet */
+  double *gear_w;          /* Gear with friction: dt^k/k! d^k w/dt^k, k = 1..4 (n x 3 x 4) */
   double *radius, *mass;   /* mass NULL: every mass is 1 */
   double *w, *wp, *tq;     /* with friction: angular velocities, their prediction at the full
                               step and torques (n x 3; 2D: z only); NULL without */

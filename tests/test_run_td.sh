@@ -68,9 +68,18 @@ spin=$(h5dump -d /particles/all/angular_velocity/value "$tmp/fa/run.h5" | awk -F
 check "friction: the disks spin (mean |w| $spin > 0.05 at t = 2)" lt 0.05 "$spin"
 res=$(field ledger_residual "$tmp/fa/err")
 check "friction, wet shaken run: energy ledger closes to $res (< 1e-3)" lt "$res" 1e-3
-"$run" "$scenes/shake2d_td.ini" mu=0.5 integrator=gear -o "$tmp/x.h5" 2> "$tmp/e7"; rc=$?
-check "friction with Gear is refused, naming both keys" \
-  bash -c "[ $rc -ne 0 ] && grep -qE \"keys 'mu' and 'integrator'.*verlet\" '$tmp/e7'"
+# friction with Gear: the angular velocities' derivatives are part of the checkpoint too
+runin "$tmp/fga" --no-volatile $rough integrator=gear
+runin "$tmp/fgr" --no-volatile $rough integrator=gear --abort-after-checkpoint 1
+check "friction with Gear: the checkpoint holds Gear's derivatives of w" \
+  bash -c "h5ls -r '$tmp/fgr/run.h5.ckpt' | grep -q 'state/gear_w '"
+runin "$tmp/fgr" --no-volatile $rough integrator=gear
+check "friction with Gear: a resumed run is byte-identical to the uninterrupted one" cmp -s "$tmp/fga/run.h5" "$tmp/fgr/run.h5"
+res=$(field ledger_residual "$tmp/fga/err")
+check "friction with Gear, wet shaken run: energy ledger closes to $res (< 1e-2: bond switches cost O(dt))" lt "$res" 1e-2
+"$run" "$scenes/shake2d_td.ini" mu=0.5 mu_roll=0.05 integrator=gear -o "$tmp/x.h5" 2> "$tmp/e7"; rc=$?
+check "rolling resistance with Gear is refused, naming both keys" \
+  bash -c "[ $rc -ne 0 ] && grep -qE \"keys 'mu_roll' and 'integrator'.*verlet\" '$tmp/e7'"
 
 # keys of the other engine, and inconsistent contact or bridge keys: clear errors
 "$run" "$scenes/shake2d_td.ini" tc=1e-5 -o "$tmp/x.h5" 2> "$tmp/e1"; rc=$?
