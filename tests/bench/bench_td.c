@@ -116,12 +116,14 @@ static void accuracy_table(void)
 static void friction_table(void)
 {
   double t_c = 0.005;
-  printf("# friction accuracy against cost, t_c = %g (velocity Verlet)\n", t_c);
-  printf("k\tdt\ttangential_restitution_err\trolling_speed_rel_err\tus_per_time_unit\n");
+  printf("# friction accuracy against cost, t_c = %g (velocity Verlet and Gear)\n", t_c);
+  printf("k\tintegrator\tdt\ttangential_restitution_err\trolling_speed_rel_err\tus_per_time_unit\n");
   const int ks[] = {10, 20, 50, 100, 200, 400};
+  for (int ig = WG_TD_VERLET; ig <= WG_TD_GEAR; ig++)
   for (int q = 0; q < 6; q++) {
     wg_td_params p;
     periodic_box(&p, 3, t_c / ks[q]);
+    p.integrator = ig;
     p.pp = wg_contact_linear(1.0, t_c, 0.5);
     p.pw = wg_contact_linear(0.5, t_c, 1.0);
     p.fric = p.fric_wall = (wg_friction){1e6, 2.0 / 7, 0, 0};
@@ -149,7 +151,8 @@ static void friction_table(void)
     double err_v = fabs(s.v[0] / 2 - 5.0 / 7) / (5.0 / 7);
     wg_td_free(&s);
     double w = (now_s() - w0) / t_run;
-    printf("%d\t%.3g\t%.3e\t%.3e\t%.1f\n", ks[q], p.dt, err_b, err_v, 1e6 * w);
+    printf("%d\t%s\t%.3g\t%.3e\t%.3e\t%.1f\n", ks[q], ig == WG_TD_GEAR ? "gear" : "verlet", p.dt, err_b,
+           err_v, 1e6 * w);
   }
 }
 
