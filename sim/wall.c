@@ -96,8 +96,9 @@ static double reduced_phase(double omega, double t)
   return theta;
 }
 
-static void model_init(gap_model *m, const wg_wall *w, const wg_ballistic *p,
-                       wg_wall_stats *st)
+/* The particle's part of the model (no trigonometry); model_phase adds the wall's phase. */
+static void model_particle(gap_model *m, const wg_wall *w, const wg_ballistic *p,
+                           wg_wall_stats *st)
 {
   double side = w->side >= 0 ? 1.0 : -1.0;
   m->h0 = side * (p->z0 - w->c) - p->R;
@@ -115,8 +116,12 @@ static void model_init(gap_model *m, const wg_wall *w, const wg_ballistic *p,
     m->theta0 = 0.0;
     m->period = INFINITY;
     m->ncrit = 0;
-    return;
   }
+}
+
+static void model_phase(gap_model *m, const wg_wall *w, const wg_ballistic *p)
+{
+  if (m->is_static) return;
   m->theta0 = reduced_phase(w->omega, p->t0);
   m->period = WG_TWO_PI / w->omega;
   /* gap'' = side (-g + A omega^2 sin theta) = 0  <=>  sin theta = g / (A omega^2) = 1/Gamma */
@@ -133,6 +138,13 @@ static void model_init(gap_model *m, const wg_wall *w, const wg_ballistic *p,
     m->crit[0] = 0.0;
     m->ncrit = 1;
   }
+}
+
+static void model_init(gap_model *m, const wg_wall *w, const wg_ballistic *p,
+                       wg_wall_stats *st)
+{
+  model_particle(m, w, p, st);
+  model_phase(m, w, p);
 }
 
 /* gap, gap', gap'' at tau (Eq. B.7 and its derivatives). */
@@ -510,9 +522,21 @@ wg_wall_outcome wg_wall_next_event(const wg_wall *w, const wg_ballistic *p, doub
   window win[2];
   double entry;
   if (st) st->calls++;
-  model_init(&m, w, p, st);
+  model_particle(&m, w, p, st);
   if (m.is_static) /* the reach is the wall itself: entering it is the contact */
     return static_first_root(&m, tau) ? WG_WALL_HIT : WG_WALL_NONE;
+  if (m.h0 - fabs(m.a) > 0.0) {
+    /* Outside the reach now (so gap > 0, no contact at tau = 0): the answer is the reach's
+       entry time or none, a quadratic's root; most calls end here, without the phase's
+       trigonometry. */
+    int n = reach_windows(&m, win, &entry);
+    if (n == 0) return WG_WALL_NONE;
+    if (win[0].start > 0.0) {
+      *tau = win[0].start;
+      return WG_WALL_ENTER;
+    }
+  }
+  model_phase(&m, w, p);
   gap_value v0 = gap_at(&m, 0.0);
   if (v0.gap <= 0.0 && is_closing(v0)) {
     *tau = 0.0;
