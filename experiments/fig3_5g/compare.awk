@@ -1,9 +1,9 @@
 # Reads wetgran-transitions' table (combo pair x err ...), combo = the position in the list
 # combos (-v combos='F_B:s_crit ...'), and writes results.tsv: the f-fgc E* of each combo;
-# for the smaller and the larger bridge energy E_cb = F_B s_crit, their value and the mean
-# E* of their combos (error: the mean of the members' errors, since they share one grid);
-# the ratio of the two means; and the largest relative spread (max - min over mean) among
-# combos of equal E_cb and among combos of equal F_B.
+# for each bridge energy E_cb = F_B s_crit, in increasing order k = 1, 2, ..., its value and
+# the mean E* of its combos (error: the mean of the members' errors, since they share one
+# grid); the ratio of the largest energy's mean to the smallest's; and the largest relative
+# spread (max - min over mean) among combos of equal E_cb and among combos of equal F_B.
 BEGIN { split(combos, list, " ") }
 $1 == "combo" || $2 != "f_fgc" { next }
 {
@@ -19,14 +19,18 @@ $1 == "combo" || $2 != "f_fgc" { next }
 }
 END {
   ne = 0
-  for (e in n) { ne++; if (ne == 1 || e + 0 < lo + 0) lo = e; if (ne == 1 || e + 0 > hi + 0) hi = e }
-  if (ne != 2) { print "compare.awk: expected two bridge energies, found " ne > "/dev/stderr"; exit 1 }
-  m_lo = sum[lo] / n[lo]; e_lo = esum[lo] / n[lo]; m_hi = sum[hi] / n[hi]; e_hi = esum[hi] / n[hi]
-  printf "ecb_lo\t%s\tnan\nf_fgc_ecb_lo\t%.4g\t%.3g\nf_fgc_ecb_lo_n\t%d\tnan\n", lo, m_lo, e_lo, n[lo]
-  printf "ecb_hi\t%s\tnan\nf_fgc_ecb_hi\t%.4g\t%.3g\nf_fgc_ecb_hi_n\t%d\tnan\n", hi, m_hi, e_hi, n[hi]
-  r = m_hi / m_lo
-  printf "f_fgc_ratio_ecb\t%.4g\t%.3g\n", r, r * sqrt((e_lo / m_lo)^2 + (e_hi / m_hi)^2)
-  se = 0; for (e in n) if ((ehi[e] - elo[e]) / (sum[e] / n[e]) > se) se = (ehi[e] - elo[e]) / (sum[e] / n[e])
+  for (e in n) order[++ne] = e
+  if (ne < 2) { print "compare.awk: expected at least two bridge energies, found " ne > "/dev/stderr"; exit 1 }
+  for (i = 2; i <= ne; i++)
+    for (j = i; j > 1 && order[j] + 0 < order[j - 1] + 0; j--) { t = order[j]; order[j] = order[j - 1]; order[j - 1] = t }
+  se = 0
+  for (k = 1; k <= ne; k++) {
+    e = order[k]; m[k] = sum[e] / n[e]; me[k] = esum[e] / n[e]
+    printf "ecb_%d\t%s\tnan\nf_fgc_ecb_%d\t%.4g\t%.3g\nf_fgc_ecb_%d_n\t%d\tnan\n", k, e, k, m[k], me[k], k, n[e]
+    if ((ehi[e] - elo[e]) / m[k] > se) se = (ehi[e] - elo[e]) / m[k]
+  }
+  r = m[ne] / m[1]
+  printf "f_fgc_ratio_ecb\t%.4g\t%.3g\n", r, r * sqrt((me[1] / m[1])^2 + (me[ne] / m[ne])^2)
   sf = 0; kf = 0
   for (f in nf) if (nf[f] > 1) { kf++; if ((fhi[f] - flo[f]) / (fsum[f] / nf[f]) > sf) sf = (fhi[f] - flo[f]) / (fsum[f] / nf[f]) }
   printf "f_fgc_spread_same_ecb\t%.4g\tnan\n", se
