@@ -31,11 +31,12 @@ static const thresholds default_thresholds = {1e-2, 12.0, 1.0};
 
 typedef struct row {
   const char *file;
-  double gamma, estar, estar_d, e_cb, eps;
+  double gamma, estar, estar_d, e_cb, eps, s_crit;
   double t0, t1, drift;
   int stationary;
   double tg, tg_err, tg_dense, tg_dilute, dn_cb, dn_area;
   int has_profiles;
+  double t_fg;   /* the fluid-gas cut of this run's scan (--per-scan), NAN: the global one */
   char label[4];
 } row;
 
@@ -139,6 +140,7 @@ static double range_of(const double *x, size_t n)
 static int measure(const char *path, row *r)
 {
   memset(r, 0, sizeof *r);
+  r->t_fg = NAN;
   r->file = path;
   hid_t f = wg_h5_open_read(path);
   if (f < 0) return WG_EIO;
@@ -149,6 +151,7 @@ static int measure(const char *path, row *r)
   st |= param(f, path, "estar_d", &r->estar_d);
   st |= param(f, path, "e_cb", &r->e_cb);
   st |= param(f, path, "eps", &r->eps);
+  st |= param(f, path, "s_crit", &r->s_crit);
   st |= param(f, path, "t_end", &t_end);
   st |= param(f, path, "profile_start", &profile_start);
   if (st != WG_OK) {
@@ -201,9 +204,9 @@ static int measure(const char *path, row *r)
   return st;
 }
 
-static const char *region(double tg, const thresholds *th)
+static const char *region(double tg, double t_fg, const thresholds *th)
 {
-  return tg < th->t_sf ? "s" : tg > th->t_fg ? "g" : "f";
+  return tg < th->t_sf ? "s" : tg > t_fg ? "g" : "f";
 }
 
 /* Homogeneous: the whole sample's T_g decides.  Coexisting (contrast above dn): the densest
@@ -211,14 +214,15 @@ static const char *region(double tg, const thresholds *th)
 static void label(row *r, const thresholds *th)
 {
   double contrast = r->e_cb > 0 ? r->dn_cb : r->dn_area;
+  double t_fg = isfinite(r->t_fg) ? r->t_fg : th->t_fg;
   if (r->has_profiles && contrast > th->dn) {
-    const char *a = region(r->tg_dense, th), *b = region(r->tg_dilute, th);
+    const char *a = region(r->tg_dense, t_fg, th), *b = region(r->tg_dilute, t_fg, th);
     if (strcmp(a, b) != 0) {
       snprintf(r->label, sizeof r->label, "%s%sc", a, b);
       return;
     }
   }
-  snprintf(r->label, sizeof r->label, "%s", region(r->tg, th));
+  snprintf(r->label, sizeof r->label, "%s", region(r->tg, t_fg, th));
 }
 
 /* Otsu: the cut of sorted x[0..n-1] into classes [0, k) and [k, n) with the largest
@@ -316,6 +320,86 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
   free(dn);
 }
 
+/* The fluid-gas cut per scan (--per-scan).  The thesis reads the fluid-gas transition as the
+   jump of T_g along a scan in E* at fixed Gamma (Fig. 3.28b).  One cut for a whole sweep fails
+   when the gas temperature itself moves by decades with Gamma (T_g/E_cb of the gas is ~50 at
+   Gamma = 10 and ~2000 at 80 for F_B = 16 mg): Otsu then splits cool gases from hot ones.  So
+   each scan -- the runs sharing Gamma, E_cb, eps and s_crit -- gets its own Otsu cut of log T_g
+   over its fluid and gas samples: the homogeneous runs' T_g and, from each coexisting run, the
+   densest and the most dilute fifth's T_g (one fluid and one gas sample at that Gamma).  Samples
+   below t_sf (solids) are left out.  The cut is kept when the samples either side of it lie
+   more than JUMP_DECADES apart (a jump, not a spread); a scan without one (all fluid or all
+   gas) takes the cut of the nearest scan in log Gamma with the same E_cb, eps and s_crit, and
+   else the global cut. */
+#define JUMP_DECADES 0.3
+static int same_scan(const row *a, const row *b)
+{
+  return a->gamma == b->gamma && a->e_cb == b->e_cb && a->eps == b->eps && a->s_crit == b->s_crit;
+}
+
+static int same_family(const row *a, const row *b)
+{
+  return a->e_cb == b->e_cb && a->eps == b->eps && a->s_crit == b->s_crit;
+}
+
+static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
+{
+  double *lt = malloc(sizeof *lt * 3 * (n ? n : 1));
+  double *cut = malloc(sizeof *cut * (n ? n : 1));
+  if (!lt || !cut) {
+    free(lt);
+    free(cut);
+    return;
+  }
+  for (size_t i = 0; i < n; i++) { /* cut[i]: the own cut of run i's scan, NAN if none */
+    cut[i] = NAN;
+    size_t first = 0;
+    while (!same_scan(&rows[first], &rows[i])) first++;
+    if (first < i) {
+      cut[i] = cut[first];
+      continue;
+    }
+    size_t m = 0;
+    for (size_t j = i; j < n; j++) {
+      const row *r = &rows[j];
+      if (!same_scan(r, &rows[i])) continue;
+      double c = r->e_cb > 0 ? r->dn_cb : r->dn_area;
+      double t[2] = {r->tg, NAN};
+      if (r->has_profiles && c > th->dn) {
+        t[0] = r->tg_dense;
+        t[1] = r->tg_dilute;
+      }
+      for (int k = 0; k < 2; k++)
+        if (t[k] > th->t_sf) lt[m++] = log10(t[k]);
+    }
+    qsort(lt, m, sizeof *lt, cmp_double);
+    double c = m >= 2 ? otsu_two(lt, m) : NAN;
+    size_t k = 0;
+    while (k < m && lt[k] < c) k++;
+    if (isfinite(c) && k > 0 && k < m && lt[k] - lt[k - 1] > JUMP_DECADES) cut[i] = c;
+  }
+  for (size_t i = 0; i < n; i++) {
+    rows[i].t_fg = isfinite(cut[i]) ? pow(10, cut[i]) : NAN;
+    double best = INFINITY;
+    for (size_t j = 0; !isfinite(cut[i]) && j < n; j++) {
+      double d = fabs(log(rows[j].gamma / rows[i].gamma));
+      if (isfinite(cut[j]) && same_family(&rows[i], &rows[j]) && d < best) {
+        best = d;
+        rows[i].t_fg = pow(10, cut[j]);
+      }
+    }
+    size_t first = 0;
+    while (!same_scan(&rows[first], &rows[i])) first++;
+    if (first == i)
+      fprintf(stderr, "calibrate: scan Gamma = %g, E_cb = %g, eps = %g, s_crit = %g: t_fg = %.4g (%s)\n",
+              rows[i].gamma, rows[i].e_cb, rows[i].eps, rows[i].s_crit,
+              isfinite(rows[i].t_fg) ? rows[i].t_fg : th->t_fg,
+              isfinite(cut[i]) ? "its own jump" : isfinite(rows[i].t_fg) ? "nearest scan's" : "global");
+  }
+  free(lt);
+  free(cut);
+}
+
 /* Inflection point of T_g along a scan in E* (Fig. 3.29): the middle of the segment over
    which log10 T_g rises most steeply against log10 E*; the error is half that segment.
    With inelastic collisions T_g has no jump between fluid and gas, and the thesis takes
@@ -385,6 +469,7 @@ static int write_h5(const char *path, const row *rows, size_t n, const threshold
       {"tg_dilute", "E_cb", "T_g / E_cb of the most dilute fifth of the bins", offsetof(row, tg_dilute)},
       {"dn_cb", "d^-(D-1)", "Eq. 3.3: max - min of the bridge density", offsetof(row, dn_cb)},
       {"dn_area", "1", "max - min of the packing fraction", offsetof(row, dn_area)},
+      {"t_fg", "E_cb", "fluid-gas cut of the run's scan (--per-scan; NaN: the global one)", offsetof(row, t_fg)},
   };
   hsize_t dims[1] = {n};
   int st = WG_OK;
@@ -450,6 +535,13 @@ static void usage(FILE *out)
           "                             thresholds also given as options are kept\n"
           "  --log-contrast             with --calibrate: Otsu's cut of log10 of the contrasts,\n"
           "                             for a scan whose contrasts span decades\n"
+          "  --per-scan                 with --calibrate: a fluid-gas cut t_fg per scan (runs\n"
+          "                             sharing Gamma, E_cb, eps, s_crit): Otsu's cut of log T_g\n"
+          "                             over its homogeneous runs and the dense and dilute parts\n"
+          "                             of its coexisting runs, kept where T_g jumps by more\n"
+          "                             than %g decades; else the nearest scan's in log Gamma,\n"
+          "                             else the global cut.  For sweeps over Gamma, where the\n"
+          "                             gas's T_g/E_cb moves by decades\n"
           "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
           "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
@@ -458,7 +550,7 @@ static void usage(FILE *out)
           "  --along estar|gamma        the scan variable of --inflection (default estar; gamma:\n"
           "                             the s-f line of Fig. 3.11, a scan in Gamma at fixed E*)\n",
           DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
-          default_thresholds.t_fg, default_thresholds.dn);
+          default_thresholds.t_fg, default_thresholds.dn, JUMP_DECADES);
 }
 
 static int parse_double(const char *opt, const char *s, double *v)
@@ -473,7 +565,7 @@ static int parse_double(const char *opt, const char *s, double *v)
 int main(int argc, char **argv)
 {
   thresholds th = default_thresholds;
-  int do_calibrate = 0, do_inflection = 0, given = 0, along_gamma = 0;
+  int do_calibrate = 0, do_inflection = 0, per_scan = 0, given = 0, along_gamma = 0;
   const char *h5_out = NULL;
   const char **files = calloc((size_t)argc, sizeof *files);
   size_t nf = 0;
@@ -486,6 +578,7 @@ int main(int argc, char **argv)
     }
     if (!strcmp(o, "--calibrate")) do_calibrate = 1;
     else if (!strcmp(o, "--log-contrast")) given |= LOG_CONTRAST;
+    else if (!strcmp(o, "--per-scan")) per_scan = 1;
     else if (!strcmp(o, "--inflection")) do_inflection = 1;
     else if (!strcmp(o, "--along") && a + 1 < argc) {
       const char *v = argv[++a];
@@ -526,6 +619,7 @@ int main(int argc, char **argv)
   } else if (st == WG_OK) {
     if (do_calibrate) {
       calibrate(rows, nf, &th, given);
+      if (per_scan && !(given & GIVEN_T_FG)) calibrate_per_scan(rows, nf, &th);
       printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\n", nf, th.t_sf, th.t_fg, th.dn);
     }
     printf("file\tgamma\testar\testar_d\te_cb\teps\tt0\tt1\tstationary\tdrift\ttg\ttg_err\t"

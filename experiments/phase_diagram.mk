@@ -3,8 +3,10 @@
 # ../common.mk first; its <profile>.conf gives estars, gammas and run (scene overrides: the
 # physics of the figure and the run lengths).  Each grid point is one run, a make target, so
 # `make -j` runs them in parallel and an interrupted sweep resumes.  The phase of each comes
-# from wetgran-orderparam with thresholds calibrated on the sweep; boundaries are midpoints
-# of Delaunay edges between phases; the f-fgc line is fitted as vertical.
+# from wetgran-orderparam with thresholds calibrated on the sweep, the fluid-gas cut per row of
+# Gamma (the gas's T_g/E_cb moves by decades with Gamma, so one cut for the sweep can call a
+# cool gas fluid); boundaries are midpoints of Delaunay edges between phases; the f-fgc line
+# is fitted as vertical.
 SCENE ?= $(SCENES)/shake2d.ini
 POINTS := $(foreach g,$(call conf,gammas),$(foreach e,$(call conf,estars),$(OUT)/runs/G$(g)_E$(e).h5))
 gamma_of = $(word 1,$(subst _E, ,$(1)))
@@ -17,7 +19,7 @@ $(OUT)/runs/G%.h5: $(SCENE) $(CONF) $(ENGINE) | $(OUT)/runs
 	$(BIN)/wetgran-run $(SCENE) $(call conf,run) gamma=$(call gamma_of,$*) estar=$(call estar_of,$*) -q -o $@
 
 $(OUT)/orderparam.tsv: $(POINTS) $(BIN)/wetgran-orderparam
-	$(BIN)/wetgran-orderparam --calibrate $(POINTS) > $@.tmp && mv $@.tmp $@
+	$(BIN)/wetgran-orderparam --calibrate --per-scan $(POINTS) > $@.tmp && mv $@.tmp $@
 
 $(OUT)/boundary.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
 	$(BIN)/wetgran-boundary --x estar --y gamma --label label --logx $< > $@.tmp && mv $@.tmp $@

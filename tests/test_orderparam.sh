@@ -61,6 +61,22 @@ want=$(awk -F'\t' '!/^#/ && $1 != "file" && $15 > 0 { x[n++] = log($15) / log(10
 got=$(awk -F'\t' 'NR == 1 { print $6 }' "$tmp/log.tsv")
 check "--log-contrast: dn = 10^(Otsu cut of log10 dn_cb) = $want (got $got)" \
   awk -v a="$got" -v b="$want" 'BEGIN { exit !(b > 0 && (a - b) / b < 1e-5 && (b - a) / b < 1e-5) }'
+# --per-scan: at Gamma = 80 the gas is hotter than at 15 (T_g/E_cb ~ 1400 and 2400 against
+# ~1300), so one Otsu cut over the sweep would fall between the gases; each scan's own jump
+# (Gamma = 15: fluid ~ 1, gas ~ 1300) must label every gas g, and the Gamma = 80 scan, which
+# has no fluid and so no jump, takes the Gamma = 15 scan's cut.
+"$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=2 gamma=80 -q -o "$tmp/hot80a.h5" 2>/dev/null
+"$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=2.5 gamma=80 -q -o "$tmp/hot80b.h5" 2>/dev/null
+sweep="$tmp/cold.h5 $tmp/hot.h5 $tmp/hot80a.h5 $tmp/hot80b.h5"
+"$bin/wetgran-orderparam" --calibrate --per-scan $sweep > "$tmp/ps.tsv" 2> "$tmp/ps.err"
+labels=$(awk -F'\t' '!/^#/ && $1 != "file" { sub(/.*\//, "", $1); printf "%s:%s ", $1, $17 }' "$tmp/ps.tsv")
+check "--per-scan: the fluid is f and the three gases g ($labels)" \
+  test "$labels" = "cold.h5:f hot.h5:g hot80a.h5:g hot80b.h5:g "
+cut15=$(sed -n 's/.*scan Gamma = 15,.*t_fg = \([^ ]*\) (its own jump)/\1/p' "$tmp/ps.err")
+check "--per-scan: the Gamma = 15 scan's cut ($cut15) lies between its fluid and its gas" \
+  awk -v c="$cut15" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
+check "--per-scan: the Gamma = 80 scan, all gas, takes the nearest scan's cut" \
+  grep -q "scan Gamma = 80,.*t_fg = $cut15 (nearest scan's)" "$tmp/ps.err"
 "$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2> "$tmp/err"; rc=$?
 check "--along gamma over runs of one Gamma: an error naming gamma" bash -c "[ $rc -ne 0 ] && grep -q gamma '$tmp/err'"
 "$bin/wetgran-orderparam" "$tmp/none.h5" > /dev/null 2> "$tmp/err"; rc=$?
