@@ -8,7 +8,9 @@
 # cool gas fluid); boundaries are midpoints of Delaunay edges between phases; the f-fgc line
 # is fitted as vertical.
 SCENE ?= $(SCENES)/shake2d.ini
-POINTS := $(foreach g,$(call conf,gammas),$(foreach e,$(call conf,estars),$(OUT)/runs/G$(g)_E$(e).h5))
+# a row may list its own E* values (estars_<gamma> = ...), refined where its boundaries lie
+row_estars = $(or $(call conf,estars_$(1)),$(call conf,estars))
+POINTS := $(foreach g,$(call conf,gammas),$(foreach e,$(call row_estars,$(g)),$(OUT)/runs/G$(g)_E$(e).h5))
 gamma_of = $(word 1,$(subst _E, ,$(1)))
 estar_of = $(word 2,$(subst _E, ,$(1)))
 # the A = s_crit line of the plot: Gamma = 2 E* E_cb / (m g s_crit)
