@@ -331,7 +331,9 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
    more than JUMP_DECADES apart (a jump, not a spread); a scan without one (all fluid or all
    gas) takes the cut of the nearest scan in log Gamma with the same E_cb, eps and s_crit, and
    else the global cut. */
-#define JUMP_DECADES 0.3
+/* 0.5: more than a fluid's T_g grows when E* doubles (0.42 decades at F_B = 4 mg, quick
+   fig3_4a); the elastic scans jump by 0.6-2 decades, those at eps = 0.96 by 0.4-0.65. */
+#define JUMP_DECADES 0.5
 static int same_scan(const row *a, const row *b)
 {
   return a->gamma == b->gamma && a->e_cb == b->e_cb && a->eps == b->eps && a->s_crit == b->s_crit;
@@ -345,18 +347,20 @@ static int same_family(const row *a, const row *b)
 static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
 {
   double *lt = malloc(sizeof *lt * 3 * (n ? n : 1));
-  double *cut = malloc(sizeof *cut * (n ? n : 1));
-  if (!lt || !cut) {
+  double *cut = malloc(sizeof *cut * (n ? n : 1)), *jump = malloc(sizeof *jump * (n ? n : 1));
+  if (!lt || !cut || !jump) {
     free(lt);
     free(cut);
+    free(jump);
     return;
   }
   for (size_t i = 0; i < n; i++) { /* cut[i]: the own cut of run i's scan, NAN if none */
-    cut[i] = NAN;
+    cut[i] = jump[i] = NAN;
     size_t first = 0;
     while (!same_scan(&rows[first], &rows[i])) first++;
     if (first < i) {
       cut[i] = cut[first];
+      jump[i] = jump[first];
       continue;
     }
     size_t m = 0;
@@ -376,7 +380,8 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
     double c = m >= 2 ? otsu_two(lt, m) : NAN;
     size_t k = 0;
     while (k < m && lt[k] < c) k++;
-    if (isfinite(c) && k > 0 && k < m && lt[k] - lt[k - 1] > JUMP_DECADES) cut[i] = c;
+    if (isfinite(c) && k > 0 && k < m) jump[i] = lt[k] - lt[k - 1];
+    if (jump[i] > JUMP_DECADES) cut[i] = c;
   }
   for (size_t i = 0; i < n; i++) {
     rows[i].t_fg = isfinite(cut[i]) ? pow(10, cut[i]) : NAN;
@@ -391,13 +396,15 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
     size_t first = 0;
     while (!same_scan(&rows[first], &rows[i])) first++;
     if (first == i)
-      fprintf(stderr, "calibrate: scan Gamma = %g, E_cb = %g, eps = %g, s_crit = %g: t_fg = %.4g (%s)\n",
+      fprintf(stderr, "calibrate: scan Gamma = %g, E_cb = %g, eps = %g, s_crit = %g: t_fg = %.4g (%s; "
+              "Otsu's cut of its own samples lies in a gap of %.2f decades)\n",
               rows[i].gamma, rows[i].e_cb, rows[i].eps, rows[i].s_crit,
               isfinite(rows[i].t_fg) ? rows[i].t_fg : th->t_fg,
-              isfinite(cut[i]) ? "its own jump" : isfinite(rows[i].t_fg) ? "nearest scan's" : "global");
+              isfinite(cut[i]) ? "its own jump" : isfinite(rows[i].t_fg) ? "nearest scan's" : "global", jump[i]);
   }
   free(lt);
   free(cut);
+  free(jump);
 }
 
 /* Inflection point of T_g along a scan in E* (Fig. 3.29): the middle of the segment over

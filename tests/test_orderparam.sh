@@ -72,11 +72,11 @@ sweep="$tmp/cold.h5 $tmp/hot.h5 $tmp/hot80a.h5 $tmp/hot80b.h5"
 labels=$(awk -F'\t' '!/^#/ && $1 != "file" { sub(/.*\//, "", $1); printf "%s:%s ", $1, $17 }' "$tmp/ps.tsv")
 check "--per-scan: the fluid is f and the three gases g ($labels)" \
   test "$labels" = "cold.h5:f hot.h5:g hot80a.h5:g hot80b.h5:g "
-cut15=$(sed -n 's/.*scan Gamma = 15,.*t_fg = \([^ ]*\) (its own jump)/\1/p' "$tmp/ps.err")
+cut15=$(sed -n 's/.*scan Gamma = 15,.*t_fg = \([^ ]*\) (its own jump;.*/\1/p' "$tmp/ps.err")
 check "--per-scan: the Gamma = 15 scan's cut ($cut15) lies between its fluid and its gas" \
   awk -v c="$cut15" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
 check "--per-scan: the Gamma = 80 scan, all gas, takes the nearest scan's cut" \
-  grep -q "scan Gamma = 80,.*t_fg = $cut15 (nearest scan's)" "$tmp/ps.err"
+  grep -q "scan Gamma = 80,.*t_fg = $cut15 (nearest scan's;" "$tmp/ps.err"
 "$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2> "$tmp/err"; rc=$?
 check "--along gamma over runs of one Gamma: an error naming gamma" bash -c "[ $rc -ne 0 ] && grep -q gamma '$tmp/err'"
 "$bin/wetgran-orderparam" "$tmp/none.h5" > /dev/null 2> "$tmp/err"; rc=$?
