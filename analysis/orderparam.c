@@ -324,11 +324,13 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
    jump of T_g along a scan in E* at fixed Gamma (Fig. 3.28b).  One cut for a whole sweep fails
    when the gas temperature itself moves by decades with Gamma (T_g/E_cb of the gas is ~50 at
    Gamma = 10 and ~2000 at 80 for F_B = 16 mg): Otsu then splits cool gases from hot ones.  So
-   each scan -- the runs sharing Gamma, E_cb, eps and s_crit -- gets its own Otsu cut of log T_g
-   over its fluid and gas samples: the homogeneous runs' T_g and, from each coexisting run, the
-   densest and the most dilute fifth's T_g (one fluid and one gas sample at that Gamma).  Samples
-   below t_sf (solids) are left out.  The cut is kept when the samples either side of it lie
-   more than JUMP_DECADES apart (a jump, not a spread); a scan without one (all fluid or all
+   each scan -- the runs sharing Gamma, E_cb, eps and s_crit -- gets its own cut of log T_g
+   among its samples: the homogeneous runs' T_g and, from each coexisting run, the densest and
+   the most dilute fifth's T_g (one fluid and one gas sample at that Gamma); samples below t_sf
+   (solids) are left out.  With fluid-gas coexistence in the scan the cut lies in the gap just
+   above its hottest dense part (the homogeneous gases can be decades hotter than the dilute
+   parts: 6000-90000 E_cb against 140-420 at F_B = m g); else it is Otsu's cut.  It is kept
+   when the samples either side of it lie more than JUMP_DECADES apart (a jump, not a spread); a scan without one (all fluid or all
    gas) takes the cut of the nearest scan in log Gamma with the same E_cb, eps and s_crit, and
    else the global cut. */
 /* 0.5: more than a fluid's T_g grows when E* doubles (0.42 decades at F_B = 4 mg, quick
@@ -364,6 +366,7 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
       continue;
     }
     size_t m = 0;
+    double hottest_fluid = -INFINITY;
     for (size_t j = i; j < n; j++) {
       const row *r = &rows[j];
       if (!same_scan(r, &rows[i])) continue;
@@ -372,14 +375,25 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
       if (r->has_profiles && c > th->dn) {
         t[0] = r->tg_dense;
         t[1] = r->tg_dilute;
+        if (t[0] > th->t_sf && log10(t[0]) > hottest_fluid) hottest_fluid = log10(t[0]);
       }
       for (int k = 0; k < 2; k++)
         if (t[k] > th->t_sf) lt[m++] = log10(t[k]);
     }
     qsort(lt, m, sizeof *lt, cmp_double);
-    double c = m >= 2 ? otsu_two(lt, m) : NAN;
+    /* with fluid-gas coexistence in the scan: the cut lies in the gap just above its hottest
+       dense (fluid) part -- the homogeneous gases may be decades hotter than the coexisting
+       runs' dilute parts, so a cut between classes of all samples could fall among gases */
     size_t k = 0;
-    while (k < m && lt[k] < c) k++;
+    while (k < m && lt[k] <= hottest_fluid) k++;
+    double c = NAN;
+    if (isfinite(hottest_fluid) && k < m && lt[k] - lt[k - 1] > JUMP_DECADES) {
+      c = 0.5 * (lt[k - 1] + lt[k]);
+    } else {
+      c = m >= 2 ? otsu_two(lt, m) : NAN;
+      k = 0;
+      while (k < m && lt[k] < c) k++;
+    }
     if (isfinite(c) && k > 0 && k < m) jump[i] = lt[k] - lt[k - 1];
     if (jump[i] > JUMP_DECADES) cut[i] = c;
   }
@@ -397,7 +411,7 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
     while (!same_scan(&rows[first], &rows[i])) first++;
     if (first == i)
       fprintf(stderr, "calibrate: scan Gamma = %g, E_cb = %g, eps = %g, s_crit = %g: t_fg = %.4g (%s; "
-              "Otsu's cut of its own samples lies in a gap of %.2f decades)\n",
+              "its cut lies in a gap of %.2f decades)\n",
               rows[i].gamma, rows[i].e_cb, rows[i].eps, rows[i].s_crit,
               isfinite(rows[i].t_fg) ? rows[i].t_fg : th->t_fg,
               isfinite(cut[i]) ? "its own jump" : isfinite(rows[i].t_fg) ? "nearest scan's" : "global", jump[i]);
@@ -543,9 +557,10 @@ static void usage(FILE *out)
           "  --log-contrast             with --calibrate: Otsu's cut of log10 of the contrasts,\n"
           "                             for a scan whose contrasts span decades\n"
           "  --per-scan                 with --calibrate: a fluid-gas cut t_fg per scan (runs\n"
-          "                             sharing Gamma, E_cb, eps, s_crit): Otsu's cut of log T_g\n"
-          "                             over its homogeneous runs and the dense and dilute parts\n"
-          "                             of its coexisting runs, kept where T_g jumps by more\n"
+          "                             sharing Gamma, E_cb, eps, s_crit): in log T_g over its\n"
+          "                             homogeneous runs and the dense and dilute parts of its\n"
+          "                             coexisting runs, the gap just above the hottest dense\n"
+          "                             part (else Otsu's cut), kept where T_g jumps by more\n"
           "                             than %g decades; else the nearest scan's in log Gamma,\n"
           "                             else the global cut.  For sweeps over Gamma, where the\n"
           "                             gas's T_g/E_cb moves by decades\n"
