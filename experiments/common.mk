@@ -26,6 +26,12 @@ endif
 ID := $(notdir $(CURDIR))
 FIGURE := $(FIGDIR)/$(ID).png
 
+# The simulator, through the run archive: a run already in data/runs/<id>/<profile>/, made with
+# the same engine sources, scene and arguments, is copied instead of simulated again
+# (scripts/run-archived).  `make archive` files this profile's completed runs there.
+ARCHIVE := $(TOP)/data/runs/$(ID)/$(PROFILE)
+WGRUN := $(TOP)/scripts/run-archived $(ARCHIVE) $(ENGINE) $(BIN)/wetgran-run
+
 all: $(FIGURE)
 	@echo "$(ID) ($(PROFILE)): results in $(CURDIR)/$(OUT)/results.tsv, figure in $(FIGURE) and .pdf"
 
@@ -36,4 +42,7 @@ gnuplot = gnuplot -e "$(2); png='$(FIGURE).tmp.png'; pdf='$(FIGDIR)/$(ID).pdf.tm
 $(OUT) $(OUT)/runs $(FIGDIR):
 	mkdir -p $@
 
-.PHONY: all
+archive:
+	$(TOP)/scripts/archive-runs $(OUT)/runs $(ARCHIVE)
+
+.PHONY: all archive

@@ -18,7 +18,7 @@ SCRIT := $(call conf,s_crit)
 ECB := $(call conf,e_cb)
 
 $(OUT)/runs/G%.h5: $(SCENE) $(CONF) $(ENGINE) | $(OUT)/runs
-	$(BIN)/wetgran-run $(SCENE) $(call conf,run) gamma=$(call gamma_of,$*) estar=$(call estar_of,$*) -q -o $@
+	$(WGRUN) $(SCENE) $(call conf,run) gamma=$(call gamma_of,$*) estar=$(call estar_of,$*) -q -o $@
 
 $(OUT)/orderparam.tsv: $(POINTS) $(BIN)/wetgran-orderparam
 	$(BIN)/wetgran-orderparam --calibrate --per-scan $(POINTS) > $@.tmp && mv $@.tmp $@

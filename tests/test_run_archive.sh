@@ -1,0 +1,45 @@
+#!/bin/bash
+# The run archive (scripts/run-archived, scripts/archive-runs): an archived run is reused only
+# when engine, scene text and arguments are all the same, and reused unchanged.
+set -u
+bin=${WG_BIN:?}
+top=$(cd "$(dirname "$0")/.." && pwd)
+. "$(dirname "$0")/checks.sh"
+cp "$top/sim/scenes/shake2d.ini" "$tmp/scene.ini"
+echo "engine-a" > "$tmp/stamp"
+mkdir -p "$tmp/runs" "$tmp/arch"
+small="n=200 lx=60 t_end=20 profile_start=10 profile_bins=10 dt_series=1 dt_checkpoint=0"
+run() { "$top/scripts/run-archived" "$tmp/arch" "$tmp/stamp" "$bin/wetgran-run" "$tmp/scene.ini" $small "$@" -q -o "$tmp/runs/r.h5" > "$tmp/out" 2> "$tmp/err"; }
+simulated() { grep -q '^summary: events=' "$tmp/err"; }
+reused() { grep -q 'from .*same engine, scene and arguments' "$tmp/err" && ! simulated; }
+
+run
+check "a run with no archive is simulated" simulated
+check "and leaves its key" test -s "$tmp/runs/r.h5.key"
+check "the key's first line is the engine fingerprint" test "$(head -n 1 "$tmp/runs/r.h5.key")" = engine-a
+"$top/scripts/archive-runs" "$tmp/runs" "$tmp/arch" 2> "$tmp/arch.err"
+check "archive-runs files it" grep -q '1 filed, 0 already there' "$tmp/arch.err"
+check "the archived copy holds the same data (h5diff)" h5diff -q "$tmp/runs/r.h5" "$tmp/arch/r.h5"
+cp "$tmp/runs/r.h5" "$tmp/first.h5"
+rm "$tmp/runs/r.h5" "$tmp/runs/r.h5.key"
+run
+check "the same run again is taken from the archive, not simulated" reused
+check "and is the archived file, byte for byte" cmp -s "$tmp/runs/r.h5" "$tmp/arch/r.h5"
+"$top/scripts/archive-runs" "$tmp/runs" "$tmp/arch" 2> "$tmp/arch.err"
+check "archiving it again files nothing" grep -q '0 filed, 1 already there' "$tmp/arch.err"
+run seed=2
+check "another argument (seed = 2) is simulated" simulated
+run
+check "the first arguments again are reused" reused
+echo "engine-b" > "$tmp/stamp"
+run
+check "another engine fingerprint is simulated" simulated
+echo "engine-a" > "$tmp/stamp"
+sed -i 's/^eps_wall *=.*/eps_wall = 0.9/' "$tmp/scene.ini"
+run
+check "another scene text (eps_wall = 0.9) is simulated" simulated
+check "and gives another run (the archive is not what it returned)" bash -c "! h5diff -q '$tmp/runs/r.h5' '$tmp/first.h5' /observables/kinetic_energy/value /observables/kinetic_energy/value"
+"$top/scripts/run-archived" "$tmp/arch" "$tmp/stamp" "$bin/wetgran-run" "$tmp/scene.ini" $small > /dev/null 2> "$tmp/err"
+rc=$?
+check "no -o among the arguments: non-zero exit ($rc) naming it" bash -c "[ $rc -ne 0 ] && grep -q \"no '-o RUN.h5'\" '$tmp/err'"
+summary
