@@ -18,7 +18,7 @@ check "a run with no archive is simulated" simulated
 check "and leaves its key" test -s "$tmp/runs/r.h5.key"
 check "the key's first line is the engine fingerprint" test "$(head -n 1 "$tmp/runs/r.h5.key")" = engine-a
 "$top/scripts/archive-runs" "$tmp/runs" "$tmp/arch" 2> "$tmp/arch.err"
-check "archive-runs files it" grep -q '1 filed, 0 already there' "$tmp/arch.err"
+check "archive-runs files it" grep -q '1 filed, 0 already there, 0 checkpoints' "$tmp/arch.err"
 check "the archived copy holds the same data (h5diff)" h5diff -q "$tmp/runs/r.h5" "$tmp/arch/r.h5"
 cp "$tmp/runs/r.h5" "$tmp/first.h5"
 rm "$tmp/runs/r.h5" "$tmp/runs/r.h5.key"
@@ -39,6 +39,27 @@ sed -i 's/^eps_wall *=.*/eps_wall = 0.9/' "$tmp/scene.ini"
 run
 check "another scene text (eps_wall = 0.9) is simulated" simulated
 check "and gives another run (the archive is not what it returned)" bash -c "! h5diff -q '$tmp/runs/r.h5' '$tmp/first.h5' /observables/kinetic_energy/value /observables/kinetic_energy/value"
+# a run cut off (killed after its first checkpoints) is filed as a checkpoint and resumed from
+# it elsewhere: the result equals an uninterrupted run's
+long="n=200 lx=60 t_end=1000 profile_start=0 profile_bins=10 dt_series=1 dt_snapshot=10 dt_checkpoint=2"
+mkdir -p "$tmp/cut" "$tmp/arch2" "$tmp/whole"
+"$top/scripts/run-archived" "$tmp/arch2" "$tmp/stamp" "$bin/wetgran-run" "$tmp/scene.ini" $long -q -o "$tmp/cut/c.h5" > /dev/null 2>&1 &
+pid=$!
+for i in $(seq 100); do [ -f "$tmp/cut/c.h5.ckpt" ] && break; sleep 0.05; done
+kill -KILL $pid; wait $pid 2> /dev/null
+"$top/scripts/archive-runs" "$tmp/cut" "$tmp/arch2" 2> "$tmp/arch.err"
+check "a run killed after its first checkpoint files that checkpoint" \
+  bash -c "grep -q '0 filed, 0 already there, 1 checkpoints' '$tmp/arch.err' && test -s '$tmp/arch2/partial/c.h5.ckpt'"
+rm -f "$tmp/cut"/c.h5*
+"$top/scripts/run-archived" "$tmp/arch2" "$tmp/stamp" "$bin/wetgran-run" "$tmp/scene.ini" $long -q -o "$tmp/cut/c.h5" > /dev/null 2> "$tmp/err"
+check "a fresh directory resumes it from the filed checkpoint" grep -q 'resumes from the checkpoint filed' "$tmp/err"
+"$bin/wetgran-run" "$tmp/scene.ini" $long -q -o "$tmp/whole/c.h5" > /dev/null 2>&1
+check "the resumed run equals an uninterrupted one (energies, final positions)" \
+  bash -c "h5diff -q '$tmp/cut/c.h5' '$tmp/whole/c.h5' /observables/kinetic_energy/value /observables/kinetic_energy/value && \
+           h5diff -q '$tmp/cut/c.h5' '$tmp/whole/c.h5' /particles/all/position/value /particles/all/position/value"
+"$top/scripts/archive-runs" "$tmp/cut" "$tmp/arch2" 2> "$tmp/arch.err"
+check "once filed complete, its checkpoint is dropped" bash -c "test -s '$tmp/arch2/c.h5' && test ! -e '$tmp/arch2/partial'"
+
 "$top/scripts/run-archived" "$tmp/arch" "$tmp/stamp" "$bin/wetgran-run" "$tmp/scene.ini" $small > /dev/null 2> "$tmp/err"
 rc=$?
 check "no -o among the arguments: non-zero exit ($rc) naming it" bash -c "[ $rc -ne 0 ] && grep -q \"no '-o RUN.h5'\" '$tmp/err'"
