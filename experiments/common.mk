@@ -5,7 +5,14 @@ TOP := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
 BIN := $(TOP)/bin
 # runs depend on the simulator's source fingerprint (see the top Makefile), not its binary
 ENGINE := $(BIN)/wetgran-run.engine
-OUT := out/$(PROFILE)
+# PARTIAL=1 draws a sweep from the runs made so far (a campaign under way): runs stay in
+# out/<profile>/runs, everything drawn from them goes to out/<profile>-partial/ and
+# figures/<id>-partial.png, apart from the complete profile's
+RUNDIR := out/$(PROFILE)/runs
+OUT := out/$(PROFILE)$(if $(PARTIAL),-partial)
+# $(call made,RUNS): the runs of a sweep, or under PARTIAL only those already made
+comma := ,
+made = $(if $(PARTIAL),$(wildcard $(1)),$(1))
 FIGDIR := $(TOP)/figures
 SCENES := $(TOP)/sim/scenes
 SHELL := /bin/bash
@@ -24,7 +31,8 @@ endif
 
 # The figure id is the folder's name; every experiment makes figures/<id>.png and .pdf.
 ID := $(notdir $(CURDIR))
-FIGURE := $(FIGDIR)/$(ID).png
+FIGNAME := $(ID)$(if $(PARTIAL),-partial)
+FIGURE := $(FIGDIR)/$(FIGNAME).png
 
 # The simulator, through the run archive: a run already in data/runs/<id>/<profile>/, made with
 # the same engine sources, scene and arguments, is copied instead of simulated again
@@ -33,16 +41,16 @@ ARCHIVE := $(TOP)/data/runs/$(ID)/$(PROFILE)
 WGRUN := $(TOP)/scripts/run-archived $(ARCHIVE) $(ENGINE) $(BIN)/wetgran-run
 
 all: $(FIGURE)
-	@echo "$(ID) ($(PROFILE)): results in $(CURDIR)/$(OUT)/results.tsv, figure in $(FIGURE) and .pdf"
+	@echo "$(ID) ($(PROFILE)$(if $(PARTIAL),$(comma) runs made so far)): results in $(CURDIR)/$(OUT)/results.tsv, figure in $(FIGURE) and .pdf"
 
 # $(call gnuplot,SCRIPT,VARIABLES): draw the figure as png and pdf, each renamed when complete
-gnuplot = gnuplot -e "$(2); png='$(FIGURE).tmp.png'; pdf='$(FIGDIR)/$(ID).pdf.tmp'" $(1) && \
-  mv $(FIGDIR)/$(ID).pdf.tmp $(FIGDIR)/$(ID).pdf && mv $(FIGURE).tmp.png $(FIGURE)
+gnuplot = gnuplot -e "$(2); png='$(FIGURE).tmp.png'; pdf='$(FIGDIR)/$(FIGNAME).pdf.tmp'" $(1) && \
+  mv $(FIGDIR)/$(FIGNAME).pdf.tmp $(FIGDIR)/$(FIGNAME).pdf && mv $(FIGURE).tmp.png $(FIGURE)
 
-$(OUT) $(OUT)/runs $(FIGDIR):
+$(OUT) $(RUNDIR) $(FIGDIR):
 	mkdir -p $@
 
 archive:
-	$(TOP)/scripts/archive-runs $(OUT)/runs $(ARCHIVE)
+	$(TOP)/scripts/archive-runs $(RUNDIR) $(ARCHIVE)
 
 .PHONY: all archive

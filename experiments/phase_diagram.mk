@@ -10,17 +10,17 @@
 SCENE ?= $(SCENES)/shake2d.ini
 # a row may list its own E* values (estars_<gamma> = ...), refined where its boundaries lie
 row_estars = $(or $(call conf,estars_$(1)),$(call conf,estars))
-POINTS := $(foreach g,$(call conf,gammas),$(foreach e,$(call row_estars,$(g)),$(OUT)/runs/G$(g)_E$(e).h5))
+POINTS := $(call made,$(foreach g,$(call conf,gammas),$(foreach e,$(call row_estars,$(g)),$(RUNDIR)/G$(g)_E$(e).h5)))
 gamma_of = $(word 1,$(subst _E, ,$(1)))
 estar_of = $(word 2,$(subst _E, ,$(1)))
 # the A = s_crit line of the plot: Gamma = 2 E* E_cb / (m g s_crit)
 SCRIT := $(call conf,s_crit)
 ECB := $(call conf,e_cb)
 
-$(OUT)/runs/G%.h5: $(SCENE) $(CONF) $(ENGINE) | $(OUT)/runs
+$(RUNDIR)/G%.h5: $(SCENE) $(CONF) $(ENGINE) | $(RUNDIR)
 	$(WGRUN) $(SCENE) $(call conf,run) gamma=$(call gamma_of,$*) estar=$(call estar_of,$*) -q -o $@
 
-$(OUT)/orderparam.tsv: $(POINTS) $(BIN)/wetgran-orderparam
+$(OUT)/orderparam.tsv: $(POINTS) $(BIN)/wetgran-orderparam | $(OUT)
 	$(BIN)/wetgran-orderparam --calibrate --per-scan $(POINTS) > $@.tmp && mv $@.tmp $@
 
 $(OUT)/boundary.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
