@@ -49,13 +49,15 @@ deps:
 
 tools: $(TOOLS) $(BIN)/wetgran-run.engine
 
-# A fingerprint of the simulator's sources: experiments rerun their runs when the physics code
-# changes, not when the binary is merely relinked (a new commit changes the version string).
-# The time-driven engine's own modules (td, contact) are left out: event-driven runs do not
-# use them.
+# A fingerprint of the simulator's physics (scripts/engine-fingerprint: sources without their
+# comments and layout, compiler version, flags): experiments rerun their runs when it changes,
+# not when the binary is merely relinked (a new commit changes the version string) or a comment
+# is edited.  The time-driven engine's own modules (td, contact) are left out: event-driven runs
+# do not use them.  Recomputed on every make (a fraction of a second); rewritten only if changed.
 ED_SRC := $(sort $(filter-out sim/td.% sim/contact.% sim/friction.%,$(wildcard sim/*.c sim/*.h)))
-$(BIN)/wetgran-run.engine: $(ED_SRC) $(BIN)/wetgran-run
-	@cat $(ED_SRC) | sha256sum | cmp -s - $@ || cat $(ED_SRC) | sha256sum > $@
+$(BIN)/wetgran-run.engine: $(BIN)/wetgran-run FORCE
+	@./scripts/engine-fingerprint $(CC) '$(BASE_CFLAGS)' $(ED_SRC) > $@.tmp
+	@cmp -s $@.tmp $@ && rm $@.tmp || mv $@.tmp $@
 
 $(BUILD)/sim/%.o: sim/%.c $(wildcard sim/*.h) | $(BUILD)/sim
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
