@@ -18,6 +18,9 @@ SCENES := $(TOP)/sim/scenes
 SHELL := /bin/bash
 .SHELLFLAGS := -e -o pipefail -c
 .DELETE_ON_ERROR:
+# no run is an intermediate file to delete once what was drawn from it is made: runs are
+# borrowed by other figures, filed into the archive and worth hours of CPU
+.SECONDARY:
 
 # parameters of the profile: one file of key=value words, a prerequisite of every run
 CONF := $(PROFILE).conf
