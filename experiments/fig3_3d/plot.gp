@@ -20,5 +20,8 @@ do for [k = 1:2] {
   plot op using ($6 == 1 ? $3 : 1/0):11:(color(strcol(17))) every ::1 with points pt 5 ps 2.2 lc rgb variable notitle, \
        op using ($6 == 1 ? $3 : 1/0):11 every ::1 with points pt 4 ps 2.2 lc rgb "black" title sprintf("{/Symbol e} = 1: f-fgc at %.3g (thesis 2.08, dashed)", x1), \
        op using ($6 < 1 ? $3 : 1/0):11:(color(strcol(17))) every ::1 with points pt 7 ps 2.2 lc rgb variable notitle, \
-       op using ($6 < 1 ? $3 : 1/0):11 every ::1 with points pt 6 ps 2.2 lc rgb "red" title sprintf("{/Symbol e} = 0.96: f-fgc at %.3g (thesis 4.36, dashed)", x2)
+       op using ($6 < 1 ? $3 : 1/0):11 every ::1 with points pt 6 ps 2.2 lc rgb "red" title sprintf("{/Symbol e} = 0.96: f-fgc at %.3g (thesis 4.36, dashed)", x2), \
+       keyentry with points pt 5 ps 2 lc rgb color("f") title "fluid (f)", \
+       keyentry with points pt 5 ps 2 lc rgb color("g") title "gas (g)", \
+       keyentry with points pt 4 ps 2 lc rgb "black" title "fluid-gas coexistence (fgc, open)"
 }
