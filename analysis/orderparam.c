@@ -346,7 +346,7 @@ static int same_family(const row *a, const row *b)
   return a->e_cb == b->e_cb && a->eps == b->eps && a->s_crit == b->s_crit;
 }
 
-static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
+static void calibrate_per_scan(row *rows, size_t n, const thresholds *th, int report)
 {
   double *lt = malloc(sizeof *lt * 3 * (n ? n : 1));
   double *cut = malloc(sizeof *cut * (n ? n : 1)), *jump = malloc(sizeof *jump * (n ? n : 1));
@@ -409,7 +409,7 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
     }
     size_t first = 0;
     while (!same_scan(&rows[first], &rows[i])) first++;
-    if (first == i)
+    if (first == i && report)
       fprintf(stderr, "calibrate: scan Gamma = %g, E_cb = %g, eps = %g, s_crit = %g: t_fg = %.4g (%s; "
               "its cut lies in a gap of %.2f decades)\n",
               rows[i].gamma, rows[i].e_cb, rows[i].eps, rows[i].s_crit,
@@ -419,6 +419,40 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th)
   free(lt);
   free(cut);
   free(jump);
+}
+
+/* With --per-scan the colder class is the homogeneous runs below their own scan's t_fg, not
+   below the global cut: the global cut moves with the hottest gases of a sweep (18.5 E_cb over
+   118 runs of the full fig3_4a sweep, 29.6 over 125), and a cut that leaves the cool gases of
+   Gamma = 2 (16-28 E_cb) in the colder class makes Otsu split gas from fluid and call the
+   fluid solid.  The solid split of calibrate() is redone on this class: t_sf is Otsu's cut
+   if the two sub-classes lie more than SOLID_DECADES apart, else t_sf_none.  The scans' cuts
+   are found before it without a solid cut (the global one may lie among fluids) and redone
+   after it, as they leave out the samples below t_sf. */
+static void calibrate_solid_per_scan(const row *rows, size_t n, thresholds *th, double t_sf_none)
+{
+  double *lt = malloc(sizeof *lt * (n ? n : 1));
+  size_t k = 0;
+  if (!lt) return;
+  for (size_t i = 0; i < n; i++) {
+    const row *r = &rows[i];
+    double c = r->e_cb > 0 ? r->dn_cb : r->dn_area;
+    double t_fg = isfinite(r->t_fg) ? r->t_fg : th->t_fg;
+    if (r->tg > 0 && !(c > th->dn) && r->tg < t_fg) lt[k++] = log10(r->tg);
+  }
+  qsort(lt, k, sizeof *lt, cmp_double);
+  double sub = k >= 2 ? otsu_two(lt, k) : NAN, t_sf = t_sf_none, gap = NAN;
+  if (isfinite(sub)) {
+    size_t j = 0;
+    while (j < k && lt[j] < sub) j++;
+    gap = mean_of(lt + j, k - j) - mean_of(lt, j);
+    if (gap > SOLID_DECADES) t_sf = pow(10, sub);
+    fprintf(stderr, "calibrate: colder class of the scans (%zu homogeneous runs below their scan's "
+            "t_fg; replaces the split above) splits at %.4g into means %.3g decades apart: %s\n",
+            k, pow(10, sub), gap, gap > SOLID_DECADES ? "solid and fluid" : "no solid in this sweep");
+  }
+  free(lt);
+  th->t_sf = t_sf;
 }
 
 /* Inflection point of T_g along a scan in E* (Fig. 3.29): the middle of the segment over
@@ -563,7 +597,9 @@ static void usage(FILE *out)
           "                             part (else Otsu's cut), kept where T_g jumps by more\n"
           "                             than %g decades; else the nearest scan's in log Gamma,\n"
           "                             else the global cut.  For sweeps over Gamma, where the\n"
-          "                             gas's T_g/E_cb moves by decades\n"
+          "                             gas's T_g/E_cb moves by decades.  The solid cut t_sf is\n"
+          "                             then redone on the homogeneous runs below their own\n"
+          "                             scan's t_fg\n"
           "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
           "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
@@ -640,8 +676,18 @@ int main(int argc, char **argv)
     st = inflection(rows, nf, along_gamma);
   } else if (st == WG_OK) {
     if (do_calibrate) {
+      double t_sf_none = th.t_sf;
       calibrate(rows, nf, &th, given);
-      if (per_scan && !(given & GIVEN_T_FG)) calibrate_per_scan(rows, nf, &th);
+      if (per_scan && !(given & GIVEN_T_FG)) {
+        int redo = !(given & GIVEN_T_SF);
+        if (redo) { /* fluid-gas cuts without a solid first: the global t_sf may be a fluid */
+          thresholds no_solid = th;
+          no_solid.t_sf = t_sf_none;
+          calibrate_per_scan(rows, nf, &no_solid, 0);
+          calibrate_solid_per_scan(rows, nf, &th, t_sf_none);
+        }
+        calibrate_per_scan(rows, nf, &th, 1);
+      }
       printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\n", nf, th.t_sf, th.t_fg, th.dn);
     }
     printf("file\tgamma\testar\testar_d\te_cb\teps\tt0\tt1\tstationary\tdrift\ttg\ttg_err\t"

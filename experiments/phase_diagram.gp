@@ -18,7 +18,7 @@ do for [k = 1:2] {
   set xtics (0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.25, 1.5, 2, 3, 4, 5)
   set xlabel "E^*"
   set ylabel "{/Symbol G}"
-  set key bottom right opaque box
+  set key below box
   set arrow 1 from fit_x, graph 0.99 to fit_x, graph 0.92 head filled lw 2 lc rgb "black"
   set label 1 sprintf("f-fgc: E* = %.3g", fit_x) at fit_x * 1.03, graph 0.96 left
   set samples 200

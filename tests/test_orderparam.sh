@@ -77,6 +77,18 @@ check "--per-scan: the Gamma = 15 scan's cut ($cut15) lies between its fluid and
   awk -v c="$cut15" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
 check "--per-scan: the Gamma = 80 scan, all gas, takes the nearest scan's cut" \
   grep -q "scan Gamma = 80,.*t_fg = $cut15 (nearest scan's;" "$tmp/ps.err"
+# --per-scan with a cool gas: at Gamma = 2 the gas has T_g/E_cb ~ 16, below the sweep's global
+# cut (~165, set by the hot gases), so the global colder class holds fluids (~1.4) and that gas
+# more than a decade apart, and its split would call the fluids solid (the full fig3_4a sweep
+# did this at 125 runs).  The solid cut must come from the runs below their own scan's cut.
+# (--dn 1: all six homogeneous, as the small fluids' contrasts are near the sweep's cut.)
+"$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=0.5 gamma=2 -q -o "$tmp/cool2f.h5" 2>/dev/null
+"$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=5 gamma=2 -q -o "$tmp/cool2g.h5" 2>/dev/null
+"$bin/wetgran-orderparam" --calibrate --per-scan --dn 1 $sweep "$tmp/cool2f.h5" "$tmp/cool2g.h5" \
+  > "$tmp/ps2.tsv" 2> "$tmp/ps2.err"
+labels=$(awk -F'\t' '!/^#/ && $1 != "file" { sub(/.*\//, "", $1); printf "%s:%s ", $1, $17 }' "$tmp/ps2.tsv")
+check "--per-scan with a cool gas at Gamma = 2: fluids f, every gas g, no solid ($labels)" \
+  test "$labels" = "cold.h5:f hot.h5:g hot80a.h5:g hot80b.h5:g cool2f.h5:f cool2g.h5:g "
 "$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2> "$tmp/err"; rc=$?
 check "--along gamma over runs of one Gamma: an error naming gamma" bash -c "[ $rc -ne 0 ] && grep -q gamma '$tmp/err'"
 "$bin/wetgran-orderparam" "$tmp/none.h5" > /dev/null 2> "$tmp/err"; rc=$?
