@@ -1,5 +1,6 @@
 # Fig. 3.4a look: phases coloured as in the thesis (fluid blue, gas orange, coexistence
-# white; solid grey; sfc/sgc pale) on a log E* axis, the Delaunay boundary points, the
+# white; solid grey; sfc/sgc pale) on log E* and log Gamma axes (the thesis's "log/linear
+# scale"; a log Gamma axis keeps the rows Gamma = 1.2-3 of the bulge apart), the Delaunay boundary points, the
 # A = s_crit line (Gamma = 2 E* E_cb / (m g s_crit), from Eq. 2.18-2.19) and an arrow at the
 # fitted f-fgc transition.
 color(l) = l eq "s" ? 0x909090 : l eq "f" ? 0x3070d0 : l eq "g" ? 0xf0a030 : \
@@ -8,14 +9,15 @@ fit_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc\" { print $2 }' %s", re
 stats op using 3 every ::1 nooutput
 xmin = STATS_min / 1.3; xmax = STATS_max * 1.3
 stats op using 2 every ::1 nooutput
-ymax = STATS_max * 1.1
+ymin = STATS_min / 1.12; ymax = STATS_max * 1.6
 do for [k = 1:2] {
   reset
   if (k == 1) { set terminal pngcairo size 1000,750 font ",12"; set output png } \
   else { set terminal pdfcairo size 10in,7.5in font ",12"; set output pdf }
-  set logscale x
-  set xrange [xmin:xmax]; set yrange [0:ymax]
-  set xtics (0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.25, 1.5, 2, 3, 4, 5)
+  set logscale xy
+  set xrange [xmin:xmax]; set yrange [ymin:ymax]
+  set xtics (0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.25, 1.5, 2, 3, 4, 5)
+  set ytics (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 15, 20, 30, 40, 50, 60, 80, 100)
   set xlabel "E^*"
   set ylabel "{/Symbol G}"
   set key below box

@@ -1,24 +1,33 @@
 # Fig. 3.4a look, both engines: event-driven squares and time-driven circles filled by phase
-# (fluid blue, coexistence white, gas orange) on a log E* axis, the A = s_crit line, Eq. 4.15
+# (fluid blue, coexistence white, gas orange) on log E* and log Gamma axes (phase_diagram.gp), the A = s_crit line, Eq. 4.15
 # in red, and arrows at each engine's fitted f-fgc line.
 color(l) = l eq "s" ? 0x909090 : l eq "f" ? 0x3070d0 : l eq "g" ? 0xf0a030 : \
            l eq "fgc" ? 0xffffff : l eq "sfc" ? 0xd0d0ff : l eq "sgc" ? 0xffe0c0 : 0xff0000
 val(k) = real(system(sprintf("awk -F'\\t' '$1 == \"%s\" { print $2 }' %s", k, res)))
 xe = val("ed_vertical_f_fgc"); xt = val("td_vertical_f_fgc")
+stats ed using 3:2 every ::1 nooutput
+xmin = STATS_min_x; xmax = STATS_max_x; ymin = STATS_min_y; ymax = STATS_max_y
+stats td using 3:2 every ::1 nooutput
+xmin = (STATS_min_x < xmin ? STATS_min_x : xmin) / 1.3; xmax = (STATS_max_x > xmax ? STATS_max_x : xmax) * 1.3
+ymin = (STATS_min_y < ymin ? STATS_min_y : ymin) / 1.12; ymax = (STATS_max_y > ymax ? STATS_max_y : ymax) * 1.8
 do for [k = 1:2] {
   reset
   if (k == 1) { set terminal pngcairo size 1000,820 font ",12"; set output png } \
   else { set terminal pdfcairo size 10in,8.2in font ",12"; set output pdf }
-  set logscale x
-  set xrange [0.3:3]; set yrange [0:36]
-  set xtics (0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.25, 1.5, 2, 3)
+  set logscale xy
+  set xrange [xmin:xmax]; set yrange [ymin:ymax]
+  set xtics (0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.25, 1.5, 2, 3, 4, 5)
+  set ytics (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 15, 20, 30, 40, 50, 60, 80, 100)
   set xlabel "E^*"
   set ylabel "{/Symbol G}"
   set key below maxrows 3 box
-  set arrow 1 from xe, first 35.5 to xe, first 31.5 head filled lw 2 lc rgb "black"
-  set label 1 sprintf("event-driven: %.3g", xe) at xe * 1.03, first 34 left
-  set arrow 2 from xt, first 22 to xt, first 18 head filled lw 2 lc rgb "#606060"
-  set label 2 sprintf("time-driven: %.3g", xt) at xt * 1.03, first 20.5 left
+  set arrow 1 from xe, graph 0.99 to xe, graph 0.93 head filled lw 2 lc rgb "black"
+  set arrow 2 from xt, graph 0.99 to xt, graph 0.93 head filled lw 2 lc rgb "#606060"
+  # the labels face away from each other: the smaller value's to the left of its arrow
+  if (xe >= xt) { set label 1 sprintf("event-driven: %.3g", xe) at xe * 1.03, graph 0.96 left; \
+                  set label 2 sprintf("time-driven: %.3g", xt) at xt / 1.03, graph 0.96 right } \
+  else { set label 1 sprintf("event-driven: %.3g", xe) at xe / 1.03, graph 0.96 right; \
+         set label 2 sprintf("time-driven: %.3g", xt) at xt * 1.03, graph 0.96 left }
   plot ed using 3:2:(color(strcol(17))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
        ed using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "event-driven (fill: phase; blue f, white fgc, orange g)", \
        td using 3:2:(color(strcol(17))) every ::1 with points pt 7 ps 2.2 lc rgb variable notitle, \
