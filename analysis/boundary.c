@@ -43,6 +43,11 @@ static void usage(FILE *out)
     "optional log10, each axis is divided by its range (max - min), so that an axis with\n"
     "large numbers does not dominate the triangulation.  qhull computes the Delaunay\n"
     "triangulation (\"qhull d Qt Qbb Qc Qz\"); triangles of zero area are discarded.\n"
+    "A grid of samples is not in general position (the four corners of each rectangle\n"
+    "lie on a circle), so its Delaunay triangulation is not unique; a fixed shear of\n"
+    "1e-6 (x += 1e-6 y in the unit square) makes it so, splitting every rectangle along\n"
+    "its lower-right to upper-left diagonal, and the boundary then does not depend on\n"
+    "qhull's order of insertion (on points added far away).\n"
     "\n"
     "Output (default): header x, y, phase_a, phase_b; one row per Delaunay edge joining\n"
     "two points of different phase (each edge once, phase_a < phase_b in byte order):\n"
@@ -293,6 +298,9 @@ static size_t drop_duplicates(points_t *pts, const char *fname)
 }
 
 /* ---- triangulation -------------------------------------------------------------------- */
+
+/* x += TIE_SHEAR y in the unit square before triangulating (see main) */
+#define TIE_SHEAR 1e-6
 
 typedef struct {
   size_t i, j; /* i < j, indices into the kept points */
@@ -602,6 +610,13 @@ int main(int argc, char **argv)
       goto out;
     }
   }
+
+  /* Sampled grids are full of cocircular points (every rectangle of four), whose Delaunay
+     triangulation is not unique: qhull would pick each cell's diagonal by its order of
+     insertion, so a point added far away could flip diagonals, and the boundary, elsewhere.
+     A fixed shear far below any grid step puts the points in general position: every
+     rectangle is then split along the diagonal from its lower right to its upper left. */
+  for (size_t k = 0; k < n; k++) u[2 * k] += TIE_SHEAR * u[2 * k + 1];
 
   size_t ne = 0;
   if (triangulate(u, n, &edges, &ne, used, fname)) goto out;

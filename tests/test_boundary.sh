@@ -141,6 +141,27 @@ check "duplicate: warning names line $dupline and the kept line 12" grep -q "dup
 check "no midpoints: value nan, error nan, n 0, warning on stderr" \
   bash -c "[ $rc -eq 0 ] && grep -qx $'vertical_f_s\tnan\tnan' '$tmp/none.fit' && grep -q $'^vertical_f_s_n\t0\t' '$tmp/none.fit' && grep -q '0 midpoints' '$tmp/none.err'"
 
+# (4b) a grid is not in general position (each rectangle's corners are cocircular): the
+# diagonals must not depend on qhull's order of insertion.  Four rows whose last fluid
+# alternates (0.9, 0.85, 0.9, 0.85); adding one gas point far to the right must leave every
+# midpoint left of E* = 1.3, and the vertical fit, unchanged.
+{ printf 'estar\tgamma\tphase\n'
+  for row in "8 0.9" "15 0.85" "30 0.9" "50 0.85"; do set -- $row
+    for x in 0.4 0.6 0.8 0.85 0.9 0.95 1 1.05 1.1 1.2 1.4 1.6 2; do
+      awk -v x=$x -v y=$1 -v t=$2 'BEGIN { printf "%s\t%s\t%s\n", x, y, (x <= t ? "f" : x <= 1.2 ? "fgc" : "g") }'
+    done
+  done; } > "$tmp/rows.tsv"
+{ cat "$tmp/rows.tsv"; printf '2.5\t50\tg\n'; } > "$tmp/rows_far.tsv"
+for f in rows rows_far; do
+  "$tool" "${cols[@]}" --logx "$tmp/$f.tsv" | awk -F'\t' 'NR == 1 || $1 < 1.3' > "$tmp/$f.near"
+  "$tool" "${cols[@]}" --logx --fit-vertical f:fgc "$tmp/$f.tsv" > "$tmp/$f.fit"
+done
+check "general position: a far point leaves the midpoints near the f-fgc line unchanged" \
+  bash -c "[ \$(wc -l < '$tmp/rows.near') -gt 8 ] && cmp -s '$tmp/rows.near' '$tmp/rows_far.near'"
+check "general position: ... and the vertical fit" cmp -s "$tmp/rows.fit" "$tmp/rows_far.fit"
+check "general position: each rectangle is split lower right to upper left (no f-fgc edge (0.85, 8)-(0.9, 15))" \
+  bash -c "! grep -q \$'^0.87[0-9]*\t11.5\tf\tfgc' '$tmp/rows.near'"
+
 # (5) errors
 "$tool" --x estr --y gamma --label phase "$tmp/grid.tsv" > "$tmp/e1.out" 2> "$tmp/e1.err"; rc=$?
 check "missing column: non-zero exit, message names the column 'estr' and the file" \
