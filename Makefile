@@ -106,9 +106,11 @@ bench: deps
 # Figures: make fig3_2 [PROFILE=quick|full]; each is experiments/<id>/.
 PROFILE ?= quick
 FIGURES := $(notdir $(wildcard experiments/fig*))
-.PHONY: $(FIGURES) figures check-figures $(addprefix figure-,$(FIGURES))
-$(FIGURES): deps
+.PHONY: $(FIGURES) figures check-figures $(addprefix figure-,$(FIGURES)) figure-tools
+# one build of the tools however many figures are asked for (make -j2 fig3_4a fig3_9)
+figure-tools: deps
 	$(MAKE) tools
+$(FIGURES): figure-tools
 	$(MAKE) -C experiments/$@ PROFILE=$(PROFILE)
 
 # All figures share one pool of job slots (-j per core), so no core idles while one figure
