@@ -3,7 +3,8 @@
 #   make demo       the main job: a small real figure (thesis Fig. 3.2, event-driven)
 #   make test       build and run the tests (SANITIZE=1: under ASan + UBSan)
 #   make bench      benchmarks (numbers go to tests/bench/out/)
-# Both demo and test first install the Debian packages they need (scripts/install-deps.sh).
+# make, demo, test, bench and the figures first install the Debian packages they need
+# (scripts/install-deps.sh; nothing is done when all are there).
 
 SHELL := /bin/bash
 CC ?= gcc
@@ -42,7 +43,8 @@ BENCH_BIN := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 .PHONY: all deps demo test bench clean tools tests-build
 .DELETE_ON_ERROR:
 
-all: tools
+all: deps
+	$(MAKE) tools
 
 deps:
 	@./scripts/install-deps.sh
