@@ -18,9 +18,11 @@ SCENES := $(TOP)/sim/scenes
 SHELL := /bin/bash
 .SHELLFLAGS := -e -o pipefail -c
 .DELETE_ON_ERROR:
-# no run is an intermediate file to delete once what was drawn from it is made: runs are
-# borrowed by other figures, filed into the archive and worth hours of CPU
-.SECONDARY:
+# No run may be an intermediate file, which make deletes once what was drawn from it is made
+# (runs are borrowed by other figures, filed into the archive and worth hours of CPU): every
+# experiment names its runs as prerequisites, which tests/test_experiment_make.sh checks.
+# (Not .SECONDARY without prerequisites: that makes every target intermediate, and a missing
+# results.tsv is then not made while the figure is newer than the runs.)
 
 # parameters of the profile: one file of key=value words, a prerequisite of every run
 CONF := $(PROFILE).conf
@@ -52,6 +54,15 @@ gnuplot = gnuplot -e "$(2); png='$(FIGURE).tmp.png'; pdf='$(FIGDIR)/$(FIGNAME).p
 
 $(OUT) $(RUNDIR) $(FIGDIR):
 	mkdir -p $@
+
+# figures/<id>.png is shared by the profiles: it is redrawn when it was last drawn from
+# another profile (or from the partial runs), whatever the times of the files
+DRAWN := out/$(FIGNAME).drawn
+$(DRAWN): FORCE
+	@mkdir -p $(@D); echo '$(PROFILE)$(if $(PARTIAL), partial)' | cmp -s - $@ || echo '$(PROFILE)$(if $(PARTIAL), partial)' > $@
+$(FIGURE): $(DRAWN)
+FORCE:
+.PHONY: FORCE
 
 archive:
 	$(TOP)/scripts/archive-runs $(RUNDIR) $(ARCHIVE)

@@ -1,0 +1,58 @@
+#!/bin/bash
+# experiments/common.mk on a made-up experiment: switching PROFILE makes that profile's
+# results and redraws the shared figure (a missing results.tsv must be made even when the
+# figure is newer than everything it came from), a second make does nothing; and no run of
+# any real experiment is an intermediate file (make would delete it once drawn from).
+set -u
+top=$(cd "$(dirname "$0")/.." && pwd)
+. "$(dirname "$0")/checks.sh"
+ex=$tmp/ex
+mkdir -p "$ex"
+echo "runs = 1 2" > "$ex/quick.conf"
+echo "runs = 1 2 3" > "$ex/full.conf"
+cat > "$ex/Makefile" <<MK
+include $top/experiments/common.mk
+\$(RUNDIR)/r%.h5: \$(CONF) | \$(RUNDIR)
+	echo run \$* > \$@
+\$(OUT)/results.tsv: \$(foreach r,\$(call conf,runs),\$(RUNDIR)/r\$(r).h5.txt) | \$(OUT)
+	echo "\$(PROFILE) \$(words \$^)" > \$@
+\$(RUNDIR)/%.h5.txt: \$(RUNDIR)/%.h5
+	cp \$< \$@
+\$(FIGURE): \$(OUT)/results.tsv | \$(FIGDIR)
+	cp \$< \$@
+MK
+mk() { make -s -C "$ex" FIGDIR="$tmp/fig" "$@" > "$tmp/make.out" 2>&1; }
+fig=$tmp/fig/ex.png
+mk
+check "quick: results and figure from the quick runs" grep -qx 'quick 2' "$fig"
+mk PROFILE=full
+check "full after quick: the full results are made though the figure is newer" \
+  test -f "$ex/out/full/results.tsv"
+check "full after quick: the figure is redrawn from them" grep -qx 'full 3' "$fig"
+mk
+check "quick after full: the figure is redrawn from the quick results" grep -qx 'quick 2' "$fig"
+touch "$tmp/ref"
+mk
+check "a second make leaves the figure alone" test ! "$fig" -nt "$tmp/ref"
+rm "$ex/out/quick/results.tsv"
+mk
+check "a results.tsv removed is made again" grep -qsx 'quick 2' "$ex/out/quick/results.tsv"
+mk PARTIAL=1 PROFILE=full
+check "PARTIAL=1 draws its own figure" test -f "$tmp/fig/ex-partial.png"
+# every experiment, both profiles: the dry run succeeds, and make's database after it lists
+# no intermediate file (the tools under test stand in for bin/, a stamp for the fingerprint)
+bin=${WG_BIN:-$top/bin}
+touch "$tmp/engine"
+inter= broken=
+for e in "$top"/experiments/fig*/; do
+  for p in quick full; do
+    [ -f "$e$p.conf" ] || continue
+    make -C "$e" -n -p PROFILE=$p BIN="$bin" ENGINE="$tmp/engine" > "$tmp/db" 2> /dev/null ||
+      broken="$broken $(basename "$e")/$p"
+    f=$(grep -B4 '^#  File is an intermediate prerequisite' "$tmp/db" | grep -E '^[^#][^:]*:' | sed 's/:.*//')
+    [ -n "$f" ] && inter="$inter $(basename "$e")/$p ($(echo "$f" | wc -l), e.g. $(echo "$f" | grep -m1 h5 || echo "$f" | head -n 1))"
+  done
+done
+check "every experiment's dry run succeeds (${broken:-all})" test -z "$broken"
+check "no file of any experiment is intermediate (${inter:-none})" test -z "$inter"
+summary
