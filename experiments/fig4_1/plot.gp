@@ -15,6 +15,6 @@ do for [k = 1:2] {
   set yrange [0.8:*]
   plot gcc using 1:3:4 every ::1 with yerrorbars pt 7 ps 1.6 lc rgb "black" title "complete fluidization (time-driven)", \
        gco using 1:3:4 every ::1 with yerrorbars pt 6 ps 1.4 lc rgb "#808080" title "onset of fluidization", \
-       1 + x * (1 - e) / 3 lw 2 lc rgb "black" title sprintf("fit: E~^* = %.2f {/Symbol \261} %.2f (onset: %.2f)", e, de, eo), \
+       1 + x * (1 - e) / 3 lw 2 lc rgb "black" title sprintf("fit: Ẽ^* = %.2f {/Symbol \261} %.2f (onset: %.2f)", e, de, eo), \
        eq using 1:(column("gamma_c_415")) every ::1 with lines lw 2 dt 2 lc rgb "#c02020" title sprintf("Eq. 4.15, M = 3, E^* = %g (wetgran-theory)", estar)
 }
