@@ -109,11 +109,12 @@ bench: deps
 PROFILE ?= quick
 FIGURES := $(notdir $(wildcard experiments/fig*))
 .PHONY: $(FIGURES) figures check-figures $(addprefix figure-,$(FIGURES)) figure-tools
-# one build of the tools however many figures are asked for (make -j2 fig3_4a fig3_9)
+# one build of the tools however many figures are asked for (make -j2 fig3_4a fig3_9), and a
+# figure that borrows another's runs after that one (make -j2 fig3_3 fig3_4atd would otherwise
+# start the same run twice at once)
 figure-tools: deps
 	$(MAKE) tools
-$(FIGURES): figure-tools
-	$(MAKE) -C experiments/$@ PROFILE=$(PROFILE)
+$(FIGURES): %: figure-%
 
 # All figures share one pool of job slots (-j per core), so no core idles while one figure
 # finishes its last run; a figure that borrows another's runs (borrow = in its conf) waits
@@ -123,7 +124,7 @@ FIGURES_SKIP ?=
 figures: deps
 	$(MAKE) -j$(NPROC) tools
 	$(MAKE) -j$(NPROC) $(addprefix figure-,$(filter-out $(FIGURES_SKIP),$(FIGURES)))
-$(addprefix figure-,$(FIGURES)): figure-%:
+$(addprefix figure-,$(FIGURES)): figure-%: | figure-tools
 	$(MAKE) -C experiments/$* PROFILE=$(PROFILE)
 borrowed = $(shell grep -E '^\s*borrow\s*=' experiments/$(1)/$(PROFILE).conf 2>/dev/null | sed 's/^[^=]*=//')
 $(foreach f,$(FIGURES),$(eval figure-$(f): $(addprefix figure-,$(call borrowed,$(f)))))

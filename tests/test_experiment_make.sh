@@ -55,4 +55,11 @@ for e in "$top"/experiments/fig*/; do
 done
 check "every experiment's dry run succeeds (${broken:-all})" test -z "$broken"
 check "no file of any experiment is intermediate (${inter:-none})" test -z "$inter"
+
+# the top Makefile: `make fig3_4atd` (or make -j2 fig3_3 fig3_4atd) makes the figures whose
+# runs it borrows first, so no run is started twice at once
+db=$(make -C "$top" -p -q .wg-no-such-goal 2> /dev/null)
+check "make fig3_4atd waits for fig3_3 and fig3_4a, whose runs it borrows" \
+  grep -qx 'figure-fig3_4atd: figure-fig3_3 figure-fig3_4a | figure-tools' <<< "$db"
+check "make fig3_4atd goes through that rule" grep -qx 'fig3_4atd: figure-fig3_4atd' <<< "$db"
 summary
