@@ -20,14 +20,19 @@
 typedef struct thresholds {
   double t_sf;   /* T_g / E_cb below which a region is solid */
   double t_fg;   /* T_g / E_cb above which a region is a gas */
-  double dn;     /* Delta n_cb (wet) or Delta n_area (dry) above which phases coexist */
+  double dn;     /* contrast above which phases coexist: Delta n_cb (wet) or Delta n_area
+                    (dry), or with 'relative' that contrast over the profile's maximum */
+  int relative;
 } thresholds;
 
 /* Defaults, used without --calibrate: the order of magnitude of the cuts that --calibrate
    finds on the elastic 2D sweep of experiments/fig3_4a (fluid below ~10 E_cb, gas above;
    coexistence when n_cb varies by more than ~1 bridge per d).  A solid is a state whose
    random motion is small against E_cb (App. 3.A.1.1): below 1e-2 E_cb. */
-static const thresholds default_thresholds = {1e-2, 12.0, 1.0};
+static const thresholds default_thresholds = {1e-2, 12.0, 1.0, 0};
+/* --relative-contrast without --calibrate: a dilute region below half the densest one's
+   packing fraction (the full fig3_4a and fig3_9 sweeps: below 0.45 or above 0.64) */
+#define DEFAULT_RELATIVE_DN 0.5
 
 typedef struct row {
   const char *file;
@@ -35,6 +40,7 @@ typedef struct row {
   double t0, t1, drift;
   int stationary;
   double tg, tg_err, tg_dense, tg_dilute, dn_cb, dn_area;
+  double rel_contrast; /* Delta n_area over the largest packing fraction of the profile */
   int has_profiles;
   double t_fg;   /* the fluid-gas cut of this run's scan (--per-scan), NAN: the global one */
   char label[4];
@@ -137,6 +143,30 @@ static double range_of(const double *x, size_t n)
   return n ? hi - lo : NAN;
 }
 
+static double max_of(const double *x, size_t n)
+{
+  double hi = -INFINITY;
+  for (size_t i = 0; i < n; i++)
+    if (x[i] > hi) hi = x[i];
+  return n ? hi : NAN;
+}
+
+/* The contrast the labels cut: Eq. 3.3's Delta n_cb (wet) or Delta n_area (dry), or with
+   th->relative Delta n_area over the profile's largest packing fraction.  A dilute region
+   beside a dense one makes that ratio large however dense the dense part is and however
+   many bridges it holds, while a homogeneous state's ratio is its noise, small even for a
+   dilute gas (the packing fraction is well sampled where bridges are rare).  Delta n_cb
+   itself grows with the bridge density of the dense part: in the full fig3_9 sweep solids
+   at Gamma = 1.2 reach 1.9 from noise while the inelastic coexistence at Gamma >= 8 starts
+   at 2.0 and that of Gamma = 1.2 at 8, so no one cut of Delta n_cb tells them apart; the
+   ratio lies below 0.45 (homogeneous) or above 0.69 (coexisting) there, below 0.10 or
+   above 0.64 over the 129 runs of the full fig3_4a sweep. */
+static double contrast(const row *r, const thresholds *th)
+{
+  if (th->relative) return r->rel_contrast;
+  return r->e_cb > 0 ? r->dn_cb : r->dn_area;
+}
+
 static int measure(const char *path, row *r)
 {
   memset(r, 0, sizeof *r);
@@ -182,7 +212,7 @@ static int measure(const char *path, row *r)
                     fabs(r->drift) > DRIFT_GROSS);
 
   r->has_profiles = wg_h5_exists(f, "/observables/profiles/x");
-  r->tg_dense = r->tg_dilute = r->dn_cb = r->dn_area = NAN;
+  r->tg_dense = r->tg_dilute = r->dn_cb = r->dn_area = r->rel_contrast = NAN;
   if (r->has_profiles) {
     size_t b1, b2, b3;
     double *pf = read_1d(f, path, "/observables/profiles/packing_fraction", &b1);
@@ -191,6 +221,8 @@ static int measure(const char *path, row *r)
     if (pf && tb && nc && b1 == b2 && b2 == b3) {
       r->dn_cb = range_of(nc, b3);     /* Eq. 3.3 */
       r->dn_area = range_of(pf, b1);
+      double top = max_of(pf, b1);
+      r->rel_contrast = top > 0 ? r->dn_area / top : 0;
       r->tg_dense = quintile_mean(pf, tb, b1, 1) / scale;
       r->tg_dilute = quintile_mean(pf, tb, b1, 0) / scale;
     } else {
@@ -213,9 +245,8 @@ static const char *region(double tg, double t_fg, const thresholds *th)
    and the most dilute fifth of the lateral bins are classified separately. */
 static void label(row *r, const thresholds *th)
 {
-  double contrast = r->e_cb > 0 ? r->dn_cb : r->dn_area;
   double t_fg = isfinite(r->t_fg) ? r->t_fg : th->t_fg;
-  if (r->has_profiles && contrast > th->dn) {
+  if (r->has_profiles && contrast(r, th) > th->dn) {
     const char *a = region(r->tg_dense, t_fg, th), *b = region(r->tg_dilute, t_fg, th);
     if (strcmp(a, b) != 0) {
       snprintf(r->label, sizeof r->label, "%s%sc", a, b);
@@ -282,7 +313,7 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
     return;
   }
   for (size_t i = 0; i < n; i++) {
-    double c = rows[i].e_cb > 0 ? rows[i].dn_cb : rows[i].dn_area;
+    double c = contrast(&rows[i], th);
     if (isfinite(c) && (!(given & LOG_CONTRAST) || c > 0)) dn[nd++] = (given & LOG_CONTRAST) ? log10(c) : c;
   }
   if (nd >= MIN_RUNS_CONTRAST && !(given & GIVEN_DN)) {
@@ -291,7 +322,7 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
     if (isfinite(c)) th->dn = (given & LOG_CONTRAST) ? pow(10, c) : c;
   }
   for (size_t i = 0; i < n; i++) {
-    double c = rows[i].e_cb > 0 ? rows[i].dn_cb : rows[i].dn_area;
+    double c = contrast(&rows[i], th);
     if (rows[i].tg > 0 && !(c > th->dn)) lt[nt++] = log10(rows[i].tg);
   }
   qsort(lt, nt, sizeof *lt, cmp_double);
@@ -336,6 +367,10 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
 /* 0.5: more than a fluid's T_g grows when E* doubles (0.42 decades at F_B = 4 mg, quick
    fig3_4a); the elastic scans jump by 0.6-2 decades, those at eps = 0.96 by 0.4-0.65. */
 #define JUMP_DECADES 0.5
+/* The dense and the dilute part of one coexisting run are two phases at one state, so the gap
+   just above a scan's hottest dense part needs less: 0.4 decades (inelastic quick scans,
+   fig3_9 at Gamma = 8 and 15: 0.41-0.45 from the dense parts to the dilute ones). */
+#define JUMP_COEX_DECADES 0.4
 static int same_scan(const row *a, const row *b)
 {
   return a->gamma == b->gamma && a->e_cb == b->e_cb && a->eps == b->eps && a->s_crit == b->s_crit;
@@ -370,7 +405,7 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th, int re
     for (size_t j = i; j < n; j++) {
       const row *r = &rows[j];
       if (!same_scan(r, &rows[i])) continue;
-      double c = r->e_cb > 0 ? r->dn_cb : r->dn_area;
+      double c = contrast(r, th);
       double t[2] = {r->tg, NAN};
       if (r->has_profiles && c > th->dn) {
         t[0] = r->tg_dense;
@@ -386,16 +421,17 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th, int re
        runs' dilute parts, so a cut between classes of all samples could fall among gases */
     size_t k = 0;
     while (k < m && lt[k] <= hottest_fluid) k++;
-    double c = NAN;
-    if (isfinite(hottest_fluid) && k < m && lt[k] - lt[k - 1] > JUMP_DECADES) {
+    double c = NAN, need = JUMP_DECADES;
+    if (isfinite(hottest_fluid) && k < m && lt[k] - lt[k - 1] > JUMP_COEX_DECADES) {
       c = 0.5 * (lt[k - 1] + lt[k]);
+      need = JUMP_COEX_DECADES;
     } else {
       c = m >= 2 ? otsu_two(lt, m) : NAN;
       k = 0;
       while (k < m && lt[k] < c) k++;
     }
     if (isfinite(c) && k > 0 && k < m) jump[i] = lt[k] - lt[k - 1];
-    if (jump[i] > JUMP_DECADES) cut[i] = c;
+    if (jump[i] > need) cut[i] = c;
   }
   for (size_t i = 0; i < n; i++) {
     rows[i].t_fg = isfinite(cut[i]) ? pow(10, cut[i]) : NAN;
@@ -436,7 +472,7 @@ static void calibrate_solid_per_scan(const row *rows, size_t n, thresholds *th, 
   if (!lt) return;
   for (size_t i = 0; i < n; i++) {
     const row *r = &rows[i];
-    double c = r->e_cb > 0 ? r->dn_cb : r->dn_area;
+    double c = contrast(r, th);
     double t_fg = isfinite(r->t_fg) ? r->t_fg : th->t_fg;
     if (r->tg > 0 && !(c > th->dn) && r->tg < t_fg) lt[k++] = log10(r->tg);
   }
@@ -524,6 +560,7 @@ static int write_h5(const char *path, const row *rows, size_t n, const threshold
       {"tg_dilute", "E_cb", "T_g / E_cb of the most dilute fifth of the bins", offsetof(row, tg_dilute)},
       {"dn_cb", "d^-(D-1)", "Eq. 3.3: max - min of the bridge density", offsetof(row, dn_cb)},
       {"dn_area", "1", "max - min of the packing fraction", offsetof(row, dn_area)},
+      {"rel_contrast", "1", "dn_area over the largest packing fraction of the profile", offsetof(row, rel_contrast)},
       {"t_fg", "E_cb", "fluid-gas cut of the run's scan (--per-scan; NaN: the global one)", offsetof(row, t_fg)},
   };
   hsize_t dims[1] = {n};
@@ -575,10 +612,12 @@ static void usage(FILE *out)
           "                                 the lateral bins (needs profile_bins > 0)\n"
           "  dn_cb dn_area                  Eq. 3.3: max - min of the bridge density n_cb\n"
           "                                 [1/d^(D-1)] and of the packing fraction\n"
+          "  rel_contrast                   dn_area over the profile's largest packing fraction\n"
           "  label                          s, f, g, sfc, sgc or fgc (see below)\n"
           "Labels: a region is solid below T_g/E_cb = t_sf, a gas above t_fg, fluid between;\n"
-          "phases coexist when dn_cb (wet) or dn_area (dry) exceeds dn, and then the densest and\n"
-          "most dilute fifths are labelled separately.\n"
+          "phases coexist when dn_cb (wet) or dn_area (dry) exceeds dn (with\n"
+          "--relative-contrast: when rel_contrast does), and then the densest and most dilute\n"
+          "fifths are labelled separately.\n"
           "Options:\n"
           "  --t-sf X --t-fg Y --dn Z   thresholds (defaults %g, %g, %g)\n"
           "  --calibrate                derive the thresholds from the runs given, a sweep:\n"
@@ -590,6 +629,11 @@ static void usage(FILE *out)
           "                             thresholds also given as options are kept\n"
           "  --log-contrast             with --calibrate: Otsu's cut of log10 of the contrasts,\n"
           "                             for a scan whose contrasts span decades\n"
+          "  --relative-contrast        cut rel_contrast instead of dn_cb / dn_area (dn default\n"
+          "                             %g): for sweeps whose coexistence is weak in places and\n"
+          "                             strong in others (the bridges of the dense part vary\n"
+          "                             with eps, Gamma, E_cb), where one cut of dn_cb falls\n"
+          "                             between weak and strong coexistence\n"
           "  --per-scan                 with --calibrate: a fluid-gas cut t_fg per scan (runs\n"
           "                             sharing Gamma, E_cb, eps, s_crit): in log T_g over its\n"
           "                             homogeneous runs and the dense and dilute parts of its\n"
@@ -608,7 +652,7 @@ static void usage(FILE *out)
           "  --along estar|gamma        the scan variable of --inflection (default estar; gamma:\n"
           "                             the s-f line of Fig. 3.11, a scan in Gamma at fixed E*)\n",
           DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
-          default_thresholds.t_fg, default_thresholds.dn, JUMP_DECADES);
+          default_thresholds.t_fg, default_thresholds.dn, DEFAULT_RELATIVE_DN, JUMP_DECADES);
 }
 
 static int parse_double(const char *opt, const char *s, double *v)
@@ -636,6 +680,7 @@ int main(int argc, char **argv)
     }
     if (!strcmp(o, "--calibrate")) do_calibrate = 1;
     else if (!strcmp(o, "--log-contrast")) given |= LOG_CONTRAST;
+    else if (!strcmp(o, "--relative-contrast")) th.relative = 1;
     else if (!strcmp(o, "--per-scan")) per_scan = 1;
     else if (!strcmp(o, "--inflection")) do_inflection = 1;
     else if (!strcmp(o, "--along") && a + 1 < argc) {
@@ -668,6 +713,7 @@ int main(int argc, char **argv)
     free(files);
     return 2;
   }
+  if (th.relative && !(given & GIVEN_DN)) th.dn = DEFAULT_RELATIVE_DN;
   wg_h5_quiet();
   row *rows = calloc(nf, sizeof *rows);
   int st = WG_OK;
@@ -688,19 +734,21 @@ int main(int argc, char **argv)
         }
         calibrate_per_scan(rows, nf, &th, 1);
       }
-      printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\n", nf, th.t_sf, th.t_fg, th.dn);
+      printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\tcontrast\t%s\n", nf, th.t_sf,
+             th.t_fg, th.dn, th.relative ? "relative" : "absolute");
     }
     printf("file\tgamma\testar\testar_d\te_cb\teps\tt0\tt1\tstationary\tdrift\ttg\ttg_err\t"
-           "tg_dense\ttg_dilute\tdn_cb\tdn_area\tlabel\n");
+           "tg_dense\ttg_dilute\tdn_cb\tdn_area\trel_contrast\tlabel\n");
     for (size_t i = 0; i < nf; i++) {
       row *r = &rows[i];
       label(r, &th);
       if (!r->stationary)
         fprintf(stderr, "wetgran-orderparam: %s: not stationary in [%g, %g] (T_g drifts by %.0f %%)\n",
                 r->file, r->t0, r->t1, 100 * r->drift);
-      printf("%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%d\t%.3g\t%.6g\t%.3g\t%.6g\t%.6g\t%.6g\t%.6g\t%s\n",
+      printf("%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%d\t%.3g\t%.6g\t%.3g\t%.6g\t%.6g\t%.6g\t%.6g\t%.4g\t%s\n",
              r->file, r->gamma, r->estar, r->estar_d, r->e_cb, r->eps, r->t0, r->t1, r->stationary,
-             r->drift, r->tg, r->tg_err, r->tg_dense, r->tg_dilute, r->dn_cb, r->dn_area, r->label);
+             r->drift, r->tg, r->tg_err, r->tg_dense, r->tg_dilute, r->dn_cb, r->dn_area,
+             r->rel_contrast, r->label);
     }
     if (h5_out) st = write_h5(h5_out, rows, nf, &th);
   }

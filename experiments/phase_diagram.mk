@@ -21,7 +21,7 @@ $(RUNDIR)/G%.h5: $(SCENE) $(CONF) $(ENGINE) | $(RUNDIR)
 	$(WGRUN) $(SCENE) $(call conf,run) gamma=$(call gamma_of,$*) estar=$(call estar_of,$*) -q -o $@
 
 $(OUT)/orderparam.tsv: $(POINTS) $(BIN)/wetgran-orderparam | $(OUT)
-	$(BIN)/wetgran-orderparam --calibrate --per-scan $(POINTS) > $@.tmp && mv $@.tmp $@
+	$(BIN)/wetgran-orderparam --calibrate --per-scan --relative-contrast $(POINTS) > $@.tmp && mv $@.tmp $@
 
 $(OUT)/boundary.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
 	$(BIN)/wetgran-boundary --x estar --y gamma --label label --logx $< > $@.tmp && mv $@.tmp $@

@@ -61,6 +61,35 @@ want=$(awk -F'\t' '!/^#/ && $1 != "file" && $15 > 0 { x[n++] = log($15) / log(10
 got=$(awk -F'\t' 'NR == 1 { print $6 }' "$tmp/log.tsv")
 check "--log-contrast: dn = 10^(Otsu cut of log10 dn_cb) = $want (got $got)" \
   awk -v a="$got" -v b="$want" 'BEGIN { exit !(b > 0 && (a - b) / b < 1e-5 && (b - a) / b < 1e-5) }'
+# --relative-contrast: rel_contrast is dn_area over the largest packing fraction of the
+# profile.  A cold inelastic bed at Gamma = 1.2 keeps a bridge-density profile varying by
+# ~2.7 per bin from its structure alone, more than a run in fluid-gas coexistence
+# (Gamma = 15, E* = 1.2: dense part ~4, dilute part ~15 E_cb) shows; its packing fraction
+# varies by a quarter, while the coexisting run's dilute part is half as dense as the dense one.
+"$bin/wetgran-run" "$scenes/shake2d.ini" $small eps=0.96 gamma=1.2 estar=1 -q -o "$tmp/bed.h5" 2>/dev/null
+"$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=1.2 -q -o "$tmp/coex.h5" 2>/dev/null
+"$bin/wetgran-orderparam" --relative-contrast --dn 0.4 --t-fg 10 "$tmp/bed.h5" "$tmp/coex.h5" > "$tmp/rel.tsv" 2> /dev/null
+rcol() { awk -F'\t' -v f="$1" -v c="$2" '$1 == "file" { for (i = 1; i <= NF; i++) k[$i] = i; next } $1 ~ f { print $k[c] }' "$tmp/rel.tsv"; }
+"$bin/wetgran-profiles" "$tmp/coex.h5" > "$tmp/coexprof.tsv"
+want=$(awk -F'\t' 'NR > 1 { if (min == "" || $3 < min) min = $3; if ($3 > max) max = $3 } END { printf "%.6g", (max - min) / max }' "$tmp/coexprof.tsv")
+check "rel_contrast is (max - min) / max of the packing-fraction profile: $(rcol coex rel_contrast) vs $want" \
+  awk -v a="$(rcol coex rel_contrast)" -v b="$want" 'BEGIN { d = a - b; exit !(b > 0 && d < 1e-3 && d > -1e-3) }'
+check "the bed's dn_cb ($(rcol bed dn_cb)) exceeds the coexisting run's ($(rcol coex dn_cb))" \
+  awk -v a="$(rcol bed dn_cb)" -v b="$(rcol coex dn_cb)" 'BEGIN { exit !(a > b) }'
+check "... but its rel_contrast ($(rcol bed rel_contrast)) lies below 0.35 and the coexisting run's ($(rcol coex rel_contrast)) above 0.45" \
+  awk -v a="$(rcol bed rel_contrast)" -v b="$(rcol coex rel_contrast)" 'BEGIN { exit !(a < 0.35 && b > 0.45) }'
+check "--relative-contrast (cut 0.4, t_fg 10): the bed is homogeneous ($(rcol bed label)), the coexisting run fgc ($(rcol coex label))" \
+  test "$(rcol bed label) $(rcol coex label)" = "f fgc"
+"$bin/wetgran-orderparam" --calibrate --relative-contrast $four "$tmp/bed.h5" "$tmp/coex.h5" > "$tmp/relcal.tsv" 2> /dev/null
+want=$(awk -F'\t' '$1 == "file" { for (i = 1; i <= NF; i++) k[$i] = i; next } !/^#/ { x[n++] = $k["rel_contrast"] }
+  END { for (i = 0; i < n; i++) for (j = i + 1; j < n; j++) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
+        for (i = 0; i < n; i++) tot += x[i]; best = -1
+        for (k2 = 1; k2 < n; k2++) { left += x[k2 - 1]; m1 = left / k2; m2 = (tot - left) / (n - k2)
+          b = k2 * (n - k2) * (m1 - m2) ^ 2; if (b > best && x[k2] > x[k2 - 1]) { best = b; cut = (x[k2 - 1] + x[k2]) / 2 } }
+        printf "%.6g", cut }' "$tmp/relcal.tsv")
+got=$(awk -F'\t' 'NR == 1 { print $6 " " $8 }' "$tmp/relcal.tsv")
+check "--calibrate --relative-contrast: dn = Otsu cut of rel_contrast = $want, reported as relative (got $got)" \
+  awk -v a="${got% *}" -v b="$want" -v m="${got#* }" 'BEGIN { exit !(m == "relative" && b > 0 && (a - b) / b < 1e-4 && (b - a) / b < 1e-4) }'
 # --per-scan: at Gamma = 80 the gas is hotter than at 15 (T_g/E_cb ~ 1400 and 2400 against
 # ~1300), so one Otsu cut over the sweep would fall between the gases; each scan's own jump
 # (Gamma = 15: fluid ~ 1, gas ~ 1300) must label every gas g, and the Gamma = 80 scan, which
@@ -69,7 +98,7 @@ check "--log-contrast: dn = 10^(Otsu cut of log10 dn_cb) = $want (got $got)" \
 "$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=2.5 gamma=80 -q -o "$tmp/hot80b.h5" 2>/dev/null
 sweep="$tmp/cold.h5 $tmp/hot.h5 $tmp/hot80a.h5 $tmp/hot80b.h5"
 "$bin/wetgran-orderparam" --calibrate --per-scan $sweep > "$tmp/ps.tsv" 2> "$tmp/ps.err"
-labels=$(awk -F'\t' '!/^#/ && $1 != "file" { sub(/.*\//, "", $1); printf "%s:%s ", $1, $17 }' "$tmp/ps.tsv")
+labels=$(awk -F'\t' '!/^#/ && $1 != "file" { sub(/.*\//, "", $1); printf "%s:%s ", $1, $NF }' "$tmp/ps.tsv")
 check "--per-scan: the fluid is f and the three gases g ($labels)" \
   test "$labels" = "cold.h5:f hot.h5:g hot80a.h5:g hot80b.h5:g "
 cut15=$(sed -n 's/.*scan Gamma = 15,.*t_fg = \([^ ]*\) (its own jump;.*/\1/p' "$tmp/ps.err")
@@ -86,7 +115,7 @@ check "--per-scan: the Gamma = 80 scan, all gas, takes the nearest scan's cut" \
 "$bin/wetgran-run" "$scenes/shake2d.ini" $small estar=5 gamma=2 -q -o "$tmp/cool2g.h5" 2>/dev/null
 "$bin/wetgran-orderparam" --calibrate --per-scan --dn 1 $sweep "$tmp/cool2f.h5" "$tmp/cool2g.h5" \
   > "$tmp/ps2.tsv" 2> "$tmp/ps2.err"
-labels=$(awk -F'\t' '!/^#/ && $1 != "file" { sub(/.*\//, "", $1); printf "%s:%s ", $1, $17 }' "$tmp/ps2.tsv")
+labels=$(awk -F'\t' '!/^#/ && $1 != "file" { sub(/.*\//, "", $1); printf "%s:%s ", $1, $NF }' "$tmp/ps2.tsv")
 check "--per-scan with a cool gas at Gamma = 2: fluids f, every gas g, no solid ($labels)" \
   test "$labels" = "cold.h5:f hot.h5:g hot80a.h5:g hot80b.h5:g cool2f.h5:f cool2g.h5:g "
 "$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2> "$tmp/err"; rc=$?

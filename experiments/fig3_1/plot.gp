@@ -2,7 +2,7 @@
 # ring: none.  Each strip is titled with the caption's state, its driving and the label the
 # order parameters give.
 n = words(states)
-lab(s) = system(sprintf("awk -F'\\t' '$1 ~ /\\/%s\\.h5$/ { printf \"%%s  (Gamma = %%s, E* = %%s; T_g/E_{cb} = %%.3g; order parameters: %%s)\", \"%s\", $2, $3, $11, $17 }' %s", s, s, op))
+lab(s) = system(sprintf("awk -F'\\t' '$1 ~ /\\/%s\\.h5$/ { printf \"%%s  (Gamma = %%s, E* = %%s; T_g/E_{cb} = %%.3g; order parameters: %%s)\", \"%s\", $2, $3, $11, $NF }' %s", s, s, op))
 do for [k = 1:2] {
   reset
   if (k == 1) { set terminal pngcairo size 1500, 170 * n + 110 font ",11"; set output png } \
