@@ -20,7 +20,7 @@ do for [k = 1:2] {
   set key top left Left reverse opaque box font ",10"
   set title "(a) dry, {/Symbol e} = 0.96, height 18d"
   set samples 200
-  plot op using 4:2:(color(strcol("label"))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
+  plot op using 4:2:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
        op using 4:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs: blue colder gas, white coexisting, orange hotter gas", \
        2 * x title "A = d" with lines lw 2 lc rgb "black", \
        2 * x / ac title sprintf("A = %.2f d (band centre)", ac) with lines lw 2 dt 2 lc rgb "red"

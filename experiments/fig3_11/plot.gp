@@ -20,7 +20,7 @@ do for [k = 1:2] {
   set key bottom right opaque box font ",10"
   set title "{/Symbol e} = 0.8"
   set samples 200
-  plot op using 3:2:(color(strcol("label"))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
+  plot op using 3:2:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
        op using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (grey s, blue f, white fgc, orange g)", \
        2 * x * ecb title "A = d" with lines lw 2 lc rgb "black", \
        '+' using (fgx):(2.7):(fgx - fge):(fgx + fge) every ::::0 with xerrorbars pt 13 ps 2 lw 2 lc rgb "red" title sprintf("f-g: inflection of T_g at {/Symbol G} = 2.7 (Fig. 3.29), E* = %.2g", fgx), \

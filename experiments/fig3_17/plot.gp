@@ -14,7 +14,7 @@ do for [k = 1:2] {
   set ylabel "A / d"
   set key top right opaque box font ",10"
   set title "coexistence band inside the gas region, {/Symbol G} = 15"
-  plot op using 6:(column("amp")):(color(strcol("label"))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
+  plot op using 6:19:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
        op using 6:18 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (white coexisting, orange gas)", \
        ed using 1:3:4 every ::1 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb "blue" title "A_{crit}: upper edge of the band", \
        ed using 1:5:6 every ::1 with yerrorbars pt 6 ps 1.5 lw 2 lc rgb "blue" title "lower edge (where gas lies below the band)", \

@@ -17,9 +17,9 @@ do for [k = 1:2] {
   set arrow 2 from x2, graph 0 to x2, graph 1 nohead lw 2 lc rgb "red"
   set arrow 3 from 2.08, graph 0 to 2.08, graph 1 nohead lw 2 dt 2 lc rgb "black"
   set arrow 4 from 4.36, graph 0 to 4.36, graph 1 nohead lw 2 dt 2 lc rgb "red"
-  plot op using ($6 == 1 ? $3 : 1/0):11:(color(strcol("label"))) every ::1 with points pt 5 ps 2.2 lc rgb variable notitle, \
+  plot op using ($6 == 1 ? $3 : 1/0):11:(color(strcol(18))) every ::1 with points pt 5 ps 2.2 lc rgb variable notitle, \
        op using ($6 == 1 ? $3 : 1/0):11 every ::1 with points pt 4 ps 2.2 lc rgb "black" title sprintf("{/Symbol e} = 1: f-fgc at %.3g (thesis 2.08, dashed)", x1), \
-       op using ($6 < 1 ? $3 : 1/0):11:(color(strcol("label"))) every ::1 with points pt 7 ps 2.2 lc rgb variable notitle, \
+       op using ($6 < 1 ? $3 : 1/0):11:(color(strcol(18))) every ::1 with points pt 7 ps 2.2 lc rgb variable notitle, \
        op using ($6 < 1 ? $3 : 1/0):11 every ::1 with points pt 6 ps 2.2 lc rgb "red" title sprintf("{/Symbol e} = 0.96: f-fgc at %.3g (thesis 4.36, dashed)", x2), \
        keyentry with points pt 5 ps 2 lc rgb color("f") title "fluid (f)", \
        keyentry with points pt 5 ps 2 lc rgb color("g") title "gas (g)", \
