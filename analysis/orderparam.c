@@ -21,8 +21,8 @@ typedef struct thresholds {
   double t_sf;   /* T_g / E_cb below which a region is solid */
   double t_fg;   /* T_g / E_cb above which a region is a gas */
   double dn;     /* contrast above which phases coexist: Delta n_cb (wet) or Delta n_area
-                    (dry), or with 'relative' that contrast over the profile's maximum */
-  int relative;
+                    (dry), or with 'relative' Delta n_area over the largest packing fraction */
+  int relative;  /* --relative-contrast */
 } thresholds;
 
 /* Defaults, used without --calibrate: the order of magnitude of the cuts that --calibrate
