@@ -275,6 +275,30 @@ static double otsu_two(const double *x, size_t n)
   return cut;
 }
 
+/* Otsu's cut moved to the widest gap between neighbouring sorted values that lies between
+   the two classes' means (a natural break).  Otsu alone follows the classes' masses: a tail
+   of runs near one transition (fluids at E* just below the f-fgc line, whose dilute part is
+   already somewhat hotter) pulls it into that tail, while the widest empty interval between
+   the classes is where the sweep really separates. */
+static double widest_gap_cut(const double *x, size_t n, double otsu)
+{
+  size_t k = 0;
+  while (k < n && x[k] < otsu) k++;
+  if (k == 0 || k == n) return otsu;
+  double lo = 0, hi = 0;
+  for (size_t i = 0; i < k; i++) lo += x[i];
+  for (size_t i = k; i < n; i++) hi += x[i];
+  lo /= k;
+  hi /= n - k;
+  double best = x[k] - x[k - 1], cut = otsu;
+  for (size_t i = 0; i + 1 < n; i++)
+    if (x[i] >= lo && x[i + 1] <= hi && x[i + 1] - x[i] > best) {
+      best = x[i + 1] - x[i];
+      cut = 0.5 * (x[i] + x[i + 1]);
+    }
+  return cut;
+}
+
 static int cmp_double(const void *a, const void *b)
 {
   double x = *(const double *)a, y = *(const double *)b;
@@ -289,7 +313,8 @@ static double mean_of(const double *x, size_t n)
 }
 
 /* Thresholds from the runs (a sweep):
-   1. dn: Otsu's two-class cut of the lateral contrasts (homogeneous | coexisting).
+   1. dn: Otsu's two-class cut of the lateral contrasts (homogeneous | coexisting), moved
+      to the widest gap between the two classes' means (widest_gap_cut).
    2. t_fg: Otsu's cut of log10(T_g/E_cb) over the homogeneous runs: the jump between fluid
       and gas (Fig. 3.28b).
    3. t_sf: Otsu's cut within the colder class, kept only if its two sub-classes differ by
@@ -319,6 +344,7 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
   if (nd >= MIN_RUNS_CONTRAST && !(given & GIVEN_DN)) {
     qsort(dn, nd, sizeof *dn, cmp_double);
     double c = otsu_two(dn, nd);
+    if (isfinite(c)) c = widest_gap_cut(dn, nd, c);
     if (isfinite(c)) th->dn = (given & LOG_CONTRAST) ? pow(10, c) : c;
   }
   for (size_t i = 0; i < n; i++) {
@@ -621,7 +647,8 @@ static void usage(FILE *out)
           "Options:\n"
           "  --t-sf X --t-fg Y --dn Z   thresholds (defaults %g, %g, %g)\n"
           "  --calibrate                derive the thresholds from the runs given, a sweep:\n"
-          "                             Otsu's cut of the contrasts gives dn; Otsu's cut of\n"
+          "                             Otsu's cut of the contrasts, moved to the widest gap\n"
+          "                             between the two classes' means, gives dn; Otsu's cut of\n"
           "                             log T_g over the homogeneous runs gives t_fg; a further\n"
           "                             cut of the colder class gives t_sf if its halves lie\n"
           "                             more than a decade apart.  The classes found go to\n"

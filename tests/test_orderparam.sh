@@ -48,18 +48,26 @@ check "--inflection of a two-run scan: the geometric middle sqrt(0.5 * 2.5) +- 1
 "$bin/wetgran-orderparam" --inflection --along gamma "$tmp/cold30.h5" "$tmp/cold.h5" > "$tmp/infg.tsv"
 check "--inflection --along gamma of a two-run scan in Gamma: sqrt(15 * 30) +- 7.5" \
   awk -F'\t' '$1 == "inflection_gamma" { d = $2 - sqrt(450); ok = (d < 1e-4 && d > -1e-4 && $3 == 7.5) } END { exit !ok }' "$tmp/infg.tsv"
-# --log-contrast: the dn cut is Otsu's two-class cut of log10 of the runs' contrasts,
-# recomputed here from the table's dn_cb column
+# The contrast cut recomputed from a table's column: Otsu's two-class cut of the sorted
+# values, moved to the widest gap between neighbours that lies between the two classes' means.
+natural_cut='function natural_cut(x, n,   i, j, t, tot, left, best, k, m1, m2, b, cut, lo, hi, nl, g) {
+    for (i = 0; i < n; i++) for (j = i + 1; j < n; j++) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
+    for (i = 0; i < n; i++) tot += x[i]; best = -1
+    for (k = 1; k < n; k++) { left += x[k - 1]; m1 = left / k; m2 = (tot - left) / (n - k)
+      b = k * (n - k) * (m1 - m2) ^ 2; if (b > best && x[k] > x[k - 1]) { best = b; cut = (x[k - 1] + x[k]) / 2 } }
+    for (i = 0; i < n; i++) if (x[i] < cut) { lo += x[i]; nl++ } else hi += x[i]
+    lo /= nl; hi /= n - nl
+    for (i = 0; i < n && x[i] < cut; i++); g = x[i] - x[i - 1]
+    for (i = 0; i + 1 < n; i++) if (x[i] >= lo && x[i + 1] <= hi && x[i + 1] - x[i] > g) { g = x[i + 1] - x[i]; cut = (x[i] + x[i + 1]) / 2 }
+    return cut }'
+# --log-contrast: the dn cut is that cut of log10 of the runs' contrasts, recomputed here from
+# the table's dn_cb column
 four="$tmp/cold.h5 $tmp/hot.h5 $tmp/settling.h5 $tmp/cold30.h5"
 "$bin/wetgran-orderparam" --calibrate --log-contrast $four > "$tmp/log.tsv" 2> /dev/null
-want=$(awk -F'\t' '!/^#/ && $1 != "file" && $15 > 0 { x[n++] = log($15) / log(10) }
-  END { for (i = 0; i < n; i++) for (j = i + 1; j < n; j++) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
-        for (i = 0; i < n; i++) tot += x[i]; best = -1
-        for (k = 1; k < n; k++) { left += x[k - 1]; m1 = left / k; m2 = (tot - left) / (n - k)
-          b = k * (n - k) * (m1 - m2) ^ 2; if (b > best && x[k] > x[k - 1]) { best = b; cut = (x[k - 1] + x[k]) / 2 } }
-        printf "%.6g", 10 ^ cut }' "$tmp/log.tsv")
+want=$(awk -F'\t' "$natural_cut"' !/^#/ && $1 != "file" && $15 > 0 { x[n++] = log($15) / log(10) }
+  END { printf "%.6g", 10 ^ natural_cut(x, n) }' "$tmp/log.tsv")
 got=$(awk -F'\t' 'NR == 1 { print $6 }' "$tmp/log.tsv")
-check "--log-contrast: dn = 10^(Otsu cut of log10 dn_cb) = $want (got $got)" \
+check "--log-contrast: dn = 10^(cut of log10 dn_cb) = $want (got $got)" \
   awk -v a="$got" -v b="$want" 'BEGIN { exit !(b > 0 && (a - b) / b < 1e-5 && (b - a) / b < 1e-5) }'
 # --relative-contrast: rel_contrast is dn_area over the largest packing fraction of the
 # profile.  A cold inelastic bed at Gamma = 1.2 keeps a bridge-density profile varying by
@@ -81,15 +89,28 @@ check "... but its rel_contrast ($(rcol bed rel_contrast)) lies below 0.35 and t
 check "--relative-contrast (cut 0.4, t_fg 10): the bed is homogeneous ($(rcol bed label)), the coexisting run fgc ($(rcol coex label))" \
   test "$(rcol bed label) $(rcol coex label)" = "f fgc"
 "$bin/wetgran-orderparam" --calibrate --relative-contrast $four "$tmp/bed.h5" "$tmp/coex.h5" > "$tmp/relcal.tsv" 2> /dev/null
-want=$(awk -F'\t' '$1 == "file" { for (i = 1; i <= NF; i++) k[$i] = i; next } !/^#/ { x[n++] = $k["rel_contrast"] }
-  END { for (i = 0; i < n; i++) for (j = i + 1; j < n; j++) if (x[j] < x[i]) { t = x[i]; x[i] = x[j]; x[j] = t }
-        for (i = 0; i < n; i++) tot += x[i]; best = -1
-        for (k2 = 1; k2 < n; k2++) { left += x[k2 - 1]; m1 = left / k2; m2 = (tot - left) / (n - k2)
-          b = k2 * (n - k2) * (m1 - m2) ^ 2; if (b > best && x[k2] > x[k2 - 1]) { best = b; cut = (x[k2 - 1] + x[k2]) / 2 } }
-        printf "%.6g", cut }' "$tmp/relcal.tsv")
+relcut() { awk -F'\t' "$natural_cut"' $1 == "file" { for (i = 1; i <= NF; i++) k[$i] = i; next } !/^#/ { x[n++] = $k["rel_contrast"] }
+  END { printf "%.6g", natural_cut(x, n) }' "$1"; }
+want=$(relcut "$tmp/relcal.tsv")
 got=$(awk -F'\t' 'NR == 1 { print $6 " " $8 }' "$tmp/relcal.tsv")
-check "--calibrate --relative-contrast: dn = Otsu cut of rel_contrast = $want, reported as relative (got $got)" \
+check "--calibrate --relative-contrast: dn = cut of rel_contrast = $want, reported as relative (got $got)" \
   awk -v a="${got% *}" -v b="$want" -v m="${got#* }" 'BEGIN { exit !(m == "relative" && b > 0 && (a - b) / b < 1e-4 && (b - a) / b < 1e-4) }'
+# On the filed full fig3_9 runs (eps = 0.96, 20 000 t.u., data/runs): at E* = 1.7 the Gamma = 8
+# run's dilute part is 2.8 times hotter than its dense part (9 against 3.3 E_cb, rel_contrast
+# 0.44), a fluctuating fluid like those at Gamma = 15 and 30 (0.34, 0.27), while the coexistence
+# from E* = 1.8 on has dilute parts at 22-38 E_cb and rel_contrast above 0.69.  Otsu's cut of the
+# 60 runs (0.41) falls into that tail; the widest gap between the class means (0.47 to 0.60)
+# does not.
+filed=$(cd "$(dirname "$0")/../data/runs/fig3_9/full" && pwd)
+eval "set -- $filed/G{1.2,1.5,2}_E{0.3,0.6,1,1.4,1.8,2.2,2.6,3.2,4,5,6}.h5 $filed/G3_E{0.3,0.6,1,1.4,1.8,2.2,2.6}.h5 $filed/G{8,15,30,50}_E{1.7,1.8,1.9,2,2.1}.h5"
+"$bin/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$@" > "$tmp/f39.tsv" 2> /dev/null
+want=$(relcut "$tmp/f39.tsv")
+got=$(awk -F'\t' 'NR == 1 { print $6 }' "$tmp/f39.tsv")
+check "filed fig3_9 runs ($(($(wc -l < "$tmp/f39.tsv") - 2)) of them): dn = $got, the cut of rel_contrast ($want), between 0.47 and 0.60" \
+  awk -v a="$got" -v b="$want" 'BEGIN { exit !(a > 0.47 && a < 0.60 && (a - b) / b < 1e-4 && (b - a) / b < 1e-4) }'
+labels=$(awk -F'\t' '$2 == 8 && ($3 == 1.7 || $3 == 1.8) { sub(/.*\//, "", $1); printf "%s:%s ", $1, $NF }' "$tmp/f39.tsv")
+check "filed fig3_9 runs: Gamma = 8 is fluid at E* = 1.7 and coexisting at 1.8 ($labels)" \
+  test "$labels" = "G8_E1.7.h5:f G8_E1.8.h5:fgc "
 # --per-scan: at Gamma = 80 the gas is hotter than at 15 (T_g/E_cb ~ 1400 and 2400 against
 # ~1300), so one Otsu cut over the sweep would fall between the gases; each scan's own jump
 # (Gamma = 15: fluid ~ 1, gas ~ 1300) must label every gas g, and the Gamma = 80 scan, which
