@@ -25,7 +25,7 @@ do for [k = 1:2] {
   set label 1 sprintf("f-fgc: E* = %.3g", fit_x) at fit_x * 1.03, graph 0.96 left
   set samples 200
   plot op using 3:2:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
-       op using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; blue f, white fgc, orange g)", \
+       op using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; grey s, blue f, white fgc, orange g)", \
        bd using 1:2 every ::1 with points pt 7 ps 0.8 lc rgb "red" title "boundary (Delaunay midpoints)", \
        2 * x * ecb / scrit title "A = s_{crit}" with lines lw 2 lc rgb "black"
 }

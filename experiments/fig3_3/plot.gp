@@ -16,7 +16,7 @@ do for [k = 1:2] {
   set key top left opaque box
   lab = "label"
   plot op using (column("omega")):(column("gamma")):(color(strcol(lab))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
-       op using (column("omega")):(column("gamma")) every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; blue f, white fgc, orange g)", \
+       op using (column("omega")):(column("gamma")) every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; grey s, blue f, white fgc, orange g)", \
        gb using 1:3:4 every ::1 with yerrorbars pt 9 ps 1.5 lc rgb "black" title "fluid to gas-like (fgc or g), per {/Symbol w}", \
        a + b * x with lines lw 2 lc rgb "black" title sprintf("fit {/Symbol G} = %.2f + %.3f {/Symbol w}", a, b), \
        bp * x with lines lw 2 dt 2 lc rgb "black" title sprintf("through the origin: {/Symbol G}/{/Symbol w} = %.3f (E^* = %.2f)", bp, es)

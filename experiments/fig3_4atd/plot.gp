@@ -29,7 +29,7 @@ do for [k = 1:2] {
   else { set label 1 sprintf("event-driven: %.3g", xe) at xe / 1.03, graph 0.96 right; \
          set label 2 sprintf("time-driven: %.3g", xt) at xt * 1.03, graph 0.96 left }
   plot ed using 3:2:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
-       ed using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "event-driven (fill: phase; blue f, white fgc, orange g)", \
+       ed using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "event-driven (fill: phase; grey s, blue f, white fgc, orange g)", \
        td using 3:2:(color(strcol(18))) every ::1 with points pt 7 ps 2.2 lc rgb variable notitle, \
        td using 3:2 every ::1 with points pt 6 ps 2.2 lc rgb "black" title "time-driven (fig3\\_3's runs)", \
        2 * x * ecb / scrit title "A = s_{crit}" with lines lw 2 lc rgb "black", \
