@@ -31,7 +31,8 @@ typedef struct thresholds {
    random motion is small against E_cb (App. 3.A.1.1): below 1e-2 E_cb. */
 static const thresholds default_thresholds = {1e-2, 12.0, 1.0, 0};
 /* --relative-contrast without --calibrate: a dilute region below half the densest one's
-   packing fraction (the full fig3_4a and fig3_9 sweeps: below 0.45 or above 0.64) */
+   packing fraction (the full fig3_4a and fig3_9 sweeps: homogeneous below 0.47, coexisting
+   above 0.60) */
 #define DEFAULT_RELATIVE_DN 0.5
 
 typedef struct row {
