@@ -17,7 +17,8 @@ do for [k = 1:2] {
   do for [i = 1:n] {
     s = word(states, i)
     set title lab(s)
-    if (i == n) { set colorbox horizontal user origin 0.3, 0.04 size 0.4, 0.015; set cblabel "log_{10}(E_{kin} / E_{cb})" } \
+    if (i == n) { set colorbox horizontal user origin 0.3, 0.04 size 0.4, 0.015; \
+                  set label 99 "log_{10}(E_{kin} / E_{cb})" at screen 0.29, screen 0.047 right } \
     else { unset colorbox }
     f = out.'/'.s.'.frame.tsv'
     # an undefined x (not radius) is what makes gnuplot skip a point
