@@ -117,8 +117,8 @@ figure-tools: deps
 $(FIGURES): %: figure-%
 
 # All figures share one pool of job slots (-j per core), so no core idles while one figure
-# finishes its last run; a figure that borrows another's runs (borrow = in its conf) waits
-# for that one, so no run is made twice at once.
+# finishes its last run; a figure that borrows another's runs or thresholds (borrow =,
+# thresholds_from = in its conf) waits for that one, so no run is made twice at once.
 # FIGURES_SKIP: ids left out (CI leaves out those too slow for it; see .ci/run).
 FIGURES_SKIP ?=
 figures: deps
@@ -126,7 +126,7 @@ figures: deps
 	$(MAKE) -j$(NPROC) $(addprefix figure-,$(filter-out $(FIGURES_SKIP),$(FIGURES)))
 $(addprefix figure-,$(FIGURES)): figure-%: | figure-tools
 	$(MAKE) -C experiments/$* PROFILE=$(PROFILE)
-borrowed = $(shell grep -E '^\s*borrow\s*=' experiments/$(1)/$(PROFILE).conf 2>/dev/null | sed 's/^[^=]*=//')
+borrowed = $(shell grep -E '^\s*(borrow|thresholds_from)\s*=' experiments/$(1)/$(PROFILE).conf 2>/dev/null | sed 's/^[^=]*=//')
 $(foreach f,$(FIGURES),$(eval figure-$(f): $(addprefix figure-,$(call borrowed,$(f)))))
 
 # Compare every figure's results.tsv with data/reference/<id>.tsv (after make figures).

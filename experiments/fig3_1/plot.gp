@@ -3,11 +3,13 @@
 # order parameters give.
 n = words(states)
 lab(s) = system(sprintf("awk -F'\\t' '$1 ~ /\\/%s\\.h5$/ { printf \"%%s  (Gamma = %%s, E* = %%s; T_g/E_{cb} = %%.3g; order parameters: %%s)\", \"%s\", $2, $3, $11, $NF }' %s", s, s, op))
+# canvas: one 170 px strip per state above a 110 px band for the colour bar
+strip = 170.0; band = 110.0; H = strip * n + band
 do for [k = 1:2] {
   reset
-  if (k == 1) { set terminal pngcairo size 1500, 170 * n + 110 font ",11"; set output png } \
-  else { set terminal pdfcairo size 15in, (1.7 * n + 1.1)*1in font ",11"; set output pdf }
-  set multiplot layout n,1
+  if (k == 1) { set terminal pngcairo size 1500, H font ",11"; set output png } \
+  else { set terminal pdfcairo size 15in, (H / 100.0)*1in font ",11"; set output pdf }
+  set multiplot
   set size ratio -1
   set palette defined (-4 "#202080", -2 "#2090f0", 0 "#30c030", 1 "#f0d020", 2 "#e03020")
   set cbrange [-4:2]
@@ -17,8 +19,10 @@ do for [k = 1:2] {
   do for [i = 1:n] {
     s = word(states, i)
     set title lab(s)
-    if (i == n) { set colorbox horizontal user origin 0.3, 0.04 size 0.4, 0.015; \
-                  set label 99 "log_{10}(E_{kin} / E_{cb})" at screen 0.29, screen 0.047 right } \
+    set origin 0, (band + (n - i) * strip) / H
+    set size 1, strip / H
+    if (i == n) { set colorbox horizontal user origin 0.3, 45 / H size 0.4, 12 / H; \
+                  set label 99 "log_{10}(E_{kin} / E_{cb})" at screen 0.29, screen 51 / H right }\
     else { unset colorbox }
     f = out.'/'.s.'.frame.tsv'
     # an undefined x (not radius) is what makes gnuplot skip a point
