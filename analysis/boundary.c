@@ -35,8 +35,12 @@ static void usage(FILE *out)
     "  --logx, --logy         triangulate in log10 of that coordinate (values must be > 0;\n"
     "                         the thesis plots E* on a log axis)\n"
     "  --fit-vertical A:B     (repeatable) instead of the midpoints, print the mean x of the\n"
-    "                         midpoints between phases A and B (a vertical boundary)\n"
-    "  --fit-horizontal A:B   (repeatable) the same for the mean y (a horizontal boundary)\n"
+    "                         midpoints between phases A and B (a vertical boundary);\n"
+    "                         A<B: only edges with A at the smaller x (the f-fgc line is\n"
+    "                         where the fluid turns coexisting as E* rises, not where a\n"
+    "                         coexistence gives way to a fluid again at larger E*)\n"
+    "  --fit-horizontal A:B   (repeatable) the same for the mean y (a horizontal boundary;\n"
+    "                         A<B: A at the smaller y)\n"
     "  -h, --help             this text;  --version  the toolkit's version\n"
     "\n"
     "The triangulation is done in coordinates scaled to the unit square: after the\n"
@@ -392,6 +396,7 @@ typedef struct {
   double tx, ty;     /* midpoint in triangulation coordinates (log10 on log axes) */
   double hx, hy;     /* half the edge's extent along each axis, same coordinates */
   double x, y;       /* mapped back */
+  int a_left, a_below; /* a's point has the smaller x, the smaller y */
 } mid_t;
 
 static int cmp_mid(const void *pa, const void *pb)
@@ -408,13 +413,15 @@ static int cmp_mid(const void *pa, const void *pb)
 typedef struct {
   int vertical; /* 1: mean x; 0: mean y */
   char *a, *b;  /* as given */
+  int ordered;  /* A<B: only edges with A at the smaller coordinate */
 } fit_t;
 
 static int parse_fit(const char *arg, int vertical, fit_t *f)
 {
-  const char *colon = strchr(arg, ':');
-  if (!colon || colon == arg || !colon[1] || strchr(colon + 1, ':')) return 0;
+  const char *colon = strpbrk(arg, ":<");
+  if (!colon || colon == arg || !colon[1] || strpbrk(colon + 1, ":<")) return 0;
   f->vertical = vertical;
+  f->ordered = *colon == '<';
   f->a = strndup(arg, (size_t)(colon - arg));
   f->b = strdup(colon + 1);
   return f->a && f->b && strcmp(f->a, f->b);
@@ -427,22 +434,32 @@ static int phase_occurs(const points_t *pts, const char *label)
   return 0;
 }
 
+/* midpoint k is one of fit f's: between its two phases, and with A<B, A on the lower side */
+static int in_fit(const fit_t *f, const mid_t *m)
+{
+  int given_first = strcmp(f->a, f->b) < 0;
+  const char *a = given_first ? f->a : f->b, *b = given_first ? f->b : f->a;
+  if (strcmp(m->a, a) || strcmp(m->b, b)) return 0;
+  if (!f->ordered) return 1;
+  int a_lower = f->vertical ? m->a_left : m->a_below; /* the byte-order first phase lower */
+  return given_first ? a_lower : !a_lower;
+}
+
 static void print_fit(const fit_t *f, const mid_t *mids, size_t nm, const points_t *pts,
                       const opts_t *o)
 {
-  const char *a = strcmp(f->a, f->b) < 0 ? f->a : f->b, *b = a == f->a ? f->b : f->a;
   int logaxis = f->vertical ? o->logx : o->logy;
   /* two passes: mean, then the sum of squared deviations */
   size_t n = 0;
   double sum = 0;
   for (size_t k = 0; k < nm; k++)
-    if (!strcmp(mids[k].a, a) && !strcmp(mids[k].b, b)) {
+    if (in_fit(f, &mids[k])) {
       sum += f->vertical ? mids[k].tx : mids[k].ty;
       n++;
     }
   double mean = n ? sum / (double)n : NAN, ss = 0, half = 0;
   for (size_t k = 0; k < nm; k++)
-    if (!strcmp(mids[k].a, a) && !strcmp(mids[k].b, b)) {
+    if (in_fit(f, &mids[k])) {
       double d = (f->vertical ? mids[k].tx : mids[k].ty) - mean;
       ss += d * d;
       half += f->vertical ? mids[k].hx : mids[k].hy;
@@ -458,11 +475,11 @@ static void print_fit(const fit_t *f, const mid_t *mids, size_t nm, const points
     for (int m = 0; m < 2; m++) {
       const char *ph = m ? f->b : f->a;
       if (!phase_occurs(pts, ph))
-        fprintf(stderr, PROG ": warning: --fit-%s %s:%s: phase '%s' does not occur in the input\n",
-                dir, f->a, f->b, ph);
+        fprintf(stderr, PROG ": warning: --fit-%s %s%s%s: phase '%s' does not occur in the input\n",
+                dir, f->a, f->ordered ? "<" : ":", f->b, ph);
     }
-    fprintf(stderr, PROG ": warning: --fit-%s %s:%s: %zu midpoint%s between '%s' and '%s'; "
-            "error is nan%s\n", dir, f->a, f->b, n, n == 1 ? "" : "s", f->a, f->b,
+    fprintf(stderr, PROG ": warning: --fit-%s %s%s%s: %zu midpoint%s between '%s' and '%s'; "
+            "error is nan%s\n", dir, f->a, f->ordered ? "<" : ":", f->b, n, n == 1 ? "" : "s", f->a, f->b,
             n ? "" : ", value too");
   }
   printf("%s_%s_%s\t%.10g\t%.10g\n", dir, f->a, f->b, value, err);
@@ -519,7 +536,7 @@ int main(int argc, char **argv)
       if (target) {
         *target = v;
       } else if (!parse_fit(v, fitdir, &fits[nfit++])) {
-        fprintf(stderr, PROG ": %s %s: expected two different phases as A:B\n", a, v);
+        fprintf(stderr, PROG ": %s %s: expected two different phases as A:B or A<B\n", a, v);
         status = 2;
         goto out;
       }
@@ -639,6 +656,9 @@ int main(int argc, char **argv)
     mid_t m = {.a = c < 0 ? p->label : q->label, .b = c < 0 ? q->label : p->label,
                .tx = 0.5 * (p->tx + q->tx), .ty = 0.5 * (p->ty + q->ty),
                .hx = 0.5 * fabs(p->tx - q->tx), .hy = 0.5 * fabs(p->ty - q->ty)};
+    const point_t *pa = c < 0 ? p : q, *pb = c < 0 ? q : p;
+    m.a_left = pa->tx < pb->tx;
+    m.a_below = pa->ty < pb->ty;
     m.x = o.logx ? pow(10, m.tx) : m.tx;
     m.y = o.logy ? pow(10, m.ty) : m.ty;
     mids[nm++] = m;

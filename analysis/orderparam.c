@@ -313,9 +313,29 @@ static double mean_of(const double *x, size_t n)
   return n ? s / n : NAN;
 }
 
+/* The relative contrast's cut: the middle of the empty interval of the sweep's sorted
+   contrasts x[0..n-1] that holds 1/2, a dilute part half as dense as the dense one.  The
+   sweeps' contrasts form two classes, homogeneous (below 0.18 over the 117 runs of the full
+   fig3_9 sweep, below 0.10 over the 129 of fig3_4a) and coexisting (above 0.55 and 0.64),
+   with a sparse tail between them: fluids just before the f-fgc line whose dilute part is
+   somewhat hotter (0.27-0.47 in fig3_9).  Otsu's cut and the widest gap between the class
+   means fall on either side of that tail as a sweep fills (0.41 and 0.53 at 60 runs of
+   fig3_9, 0.23 at 117); the empty interval around 1/2 (0.47-0.55, 0.10-0.64) does not move. */
+#define HALF_DENSITY 0.5
+static double half_density_cut(const double *x, size_t n)
+{
+  double lo = 0, hi = 1;
+  for (size_t i = 0; i < n; i++) {
+    if (x[i] <= HALF_DENSITY && x[i] > lo) lo = x[i];
+    if (x[i] > HALF_DENSITY && x[i] < hi) hi = x[i];
+  }
+  return 0.5 * (lo + hi);
+}
+
 /* Thresholds from the runs (a sweep):
    1. dn: Otsu's two-class cut of the lateral contrasts (homogeneous | coexisting), moved
-      to the widest gap between the two classes' means (widest_gap_cut).
+      to the widest gap between the two classes' means (widest_gap_cut); with
+      --relative-contrast the middle of the empty interval around 1/2 (half_density_cut).
    2. t_fg: Otsu's cut of log10(T_g/E_cb) over the homogeneous runs: the jump between fluid
       and gas (Fig. 3.28b).
    3. t_sf: Otsu's cut within the colder class, kept only if its two sub-classes differ by
@@ -344,8 +364,8 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
   }
   if (nd >= MIN_RUNS_CONTRAST && !(given & GIVEN_DN)) {
     qsort(dn, nd, sizeof *dn, cmp_double);
-    double c = otsu_two(dn, nd);
-    if (isfinite(c)) c = widest_gap_cut(dn, nd, c);
+    double c = th->relative ? half_density_cut(dn, nd) : otsu_two(dn, nd);
+    if (isfinite(c) && !th->relative) c = widest_gap_cut(dn, nd, c);
     if (isfinite(c)) th->dn = (given & LOG_CONTRAST) ? pow(10, c) : c;
   }
   for (size_t i = 0; i < n; i++) {
@@ -385,18 +405,20 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
    each scan -- the runs sharing Gamma, E_cb, eps and s_crit -- gets its own cut of log T_g
    among its samples: the homogeneous runs' T_g and, from each coexisting run, the densest and
    the most dilute fifth's T_g (one fluid and one gas sample at that Gamma); samples below t_sf
-   (solids) are left out.  With fluid-gas coexistence in the scan the cut lies in the gap just
-   above its hottest dense part (the homogeneous gases can be decades hotter than the dilute
-   parts: 6000-90000 E_cb against 140-420 at F_B = m g); else it is Otsu's cut.  It is kept
-   when the samples either side of it lie more than JUMP_DECADES apart (a jump, not a spread); a scan without one (all fluid or all
-   gas) takes the cut of the nearest scan in log Gamma with the same E_cb, eps and s_crit, and
-   else the global cut. */
+   (solids) are left out.  With fluid-gas coexistence in the scan the cut lies in the widest
+   gap between neighbouring samples within fluid_gas_interval(): the coexisting runs show both
+   phases at this Gamma, and the homogeneous gases can be decades hotter than their dilute
+   parts (6000-90000 E_cb against 140-420 at F_B = m g), so a cut between classes of all
+   samples could fall among gases.  Else it is Otsu's cut, kept when the samples either side
+   lie more than JUMP_DECADES apart (a jump, not a spread).  A scan without a cut (all fluid
+   or all gas) takes the cut of the nearest scan in log Gamma with the same E_cb, eps and
+   s_crit, and else the global cut. */
 /* 0.5: more than a fluid's T_g grows when E* doubles (0.42 decades at F_B = 4 mg, quick
    fig3_4a); the elastic scans jump by 0.6-2 decades, those at eps = 0.96 by 0.4-0.65. */
 #define JUMP_DECADES 0.5
-/* The dense and the dilute part of one coexisting run are two phases at one state, so the gap
-   just above a scan's hottest dense part needs less: 0.4 decades (inelastic quick scans,
-   fig3_9 at Gamma = 8 and 15: 0.41-0.45 from the dense parts to the dilute ones). */
+/* The dense and the dilute parts of coexisting runs show both phases at this Gamma, so a gap
+   between them needs less: 0.4 decades (inelastic quick scans, fig3_9 at Gamma = 8 and 15:
+   0.41-0.45 from the dense parts to the dilute ones). */
 #define JUMP_COEX_DECADES 0.4
 static int same_scan(const row *a, const row *b)
 {
@@ -406,6 +428,43 @@ static int same_scan(const row *a, const row *b)
 static int same_family(const row *a, const row *b)
 {
   return a->e_cb == b->e_cb && a->eps == b->eps && a->s_crit == b->s_crit;
+}
+
+/* The interval of log T_g that a scan's fluid-gas cut must lie in: above the dense (fluid)
+   parts and below the dilute (gas) parts of its coexisting runs.  A run whose contrast is a
+   density variation within one phase breaks it: at Gamma = 8, E* = 4.5 (full fig3_9) a gas
+   with dense part 26 E_cb and dilute part 93, hotter than the dilute parts of the coexistence
+   at E* = 1.8-2.7 (20-27; their dense parts 2.8-4.4).  While the hottest dense part is not
+   below the coldest dilute part, the one of these two runs whose parts differ less in T_g is
+   left out.  Returns 0 if no coexisting run is left. */
+static int fluid_gas_interval(const row *rows, size_t n, size_t scan, const thresholds *th, double *fluid,
+                              double *gas)
+{
+  char *out = calloc(n ? n : 1, 1);
+  if (!out) return 0;
+  for (;;) {
+    size_t hot = n, cold = n;
+    for (size_t j = 0; j < n; j++) {
+      const row *r = &rows[j];
+      if (out[j] || !same_scan(r, &rows[scan]) || !r->has_profiles || !(contrast(r, th) > th->dn) ||
+          !(r->tg_dense > th->t_sf))
+        continue;
+      if (hot == n || r->tg_dense > rows[hot].tg_dense) hot = j;
+      if (cold == n || r->tg_dilute < rows[cold].tg_dilute) cold = j;
+    }
+    if (hot == n) {
+      free(out);
+      return 0;
+    }
+    if (rows[hot].tg_dense < rows[cold].tg_dilute) {
+      *fluid = log10(rows[hot].tg_dense);
+      *gas = log10(rows[cold].tg_dilute);
+      free(out);
+      return 1;
+    }
+    double r_hot = rows[hot].tg_dilute / rows[hot].tg_dense, r_cold = rows[cold].tg_dilute / rows[cold].tg_dense;
+    out[r_hot < r_cold ? hot : cold] = 1;
+  }
 }
 
 static void calibrate_per_scan(row *rows, size_t n, const thresholds *th, int report)
@@ -428,33 +487,32 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th, int re
       continue;
     }
     size_t m = 0;
-    double hottest_fluid = -INFINITY;
     for (size_t j = i; j < n; j++) {
       const row *r = &rows[j];
       if (!same_scan(r, &rows[i])) continue;
-      double c = contrast(r, th);
       double t[2] = {r->tg, NAN};
-      if (r->has_profiles && c > th->dn) {
+      if (r->has_profiles && contrast(r, th) > th->dn) {
         t[0] = r->tg_dense;
         t[1] = r->tg_dilute;
-        if (t[0] > th->t_sf && log10(t[0]) > hottest_fluid) hottest_fluid = log10(t[0]);
       }
       for (int k = 0; k < 2; k++)
         if (t[k] > th->t_sf) lt[m++] = log10(t[k]);
     }
     qsort(lt, m, sizeof *lt, cmp_double);
-    /* with fluid-gas coexistence in the scan: the cut lies in the gap just above its hottest
-       dense (fluid) part -- the homogeneous gases may be decades hotter than the coexisting
-       runs' dilute parts, so a cut between classes of all samples could fall among gases */
+    double fluid, gas, c = NAN, need = JUMP_DECADES;
     size_t k = 0;
-    while (k < m && lt[k] <= hottest_fluid) k++;
-    double c = NAN, need = JUMP_DECADES;
-    if (isfinite(hottest_fluid) && k < m && lt[k] - lt[k - 1] > JUMP_COEX_DECADES) {
-      c = 0.5 * (lt[k - 1] + lt[k]);
+    if (fluid_gas_interval(rows, n, i, th, &fluid, &gas)) {
+      /* the widest gap between neighbouring samples within [fluid, gas] */
+      double best = -1;
+      for (size_t a = 0; a + 1 < m; a++)
+        if (lt[a] >= fluid && lt[a + 1] <= gas && lt[a + 1] - lt[a] > best) {
+          best = lt[a + 1] - lt[a];
+          c = 0.5 * (lt[a] + lt[a + 1]);
+          k = a + 1;
+        }
       need = JUMP_COEX_DECADES;
     } else {
       c = m >= 2 ? otsu_two(lt, m) : NAN;
-      k = 0;
       while (k < m && lt[k] < c) k++;
     }
     if (isfinite(c) && k > 0 && k < m) jump[i] = lt[k] - lt[k - 1];
@@ -649,7 +707,8 @@ static void usage(FILE *out)
           "  --t-sf X --t-fg Y --dn Z   thresholds (defaults %g, %g, %g)\n"
           "  --calibrate                derive the thresholds from the runs given, a sweep:\n"
           "                             Otsu's cut of the contrasts, moved to the widest gap\n"
-          "                             between the two classes' means, gives dn; Otsu's cut of\n"
+          "                             between the two classes' means, gives dn (relative:\n"
+          "                             the middle of the empty interval around 1/2); Otsu's cut of\n"
           "                             log T_g over the homogeneous runs gives t_fg; a further\n"
           "                             cut of the colder class gives t_sf if its halves lie\n"
           "                             more than a decade apart.  The classes found go to\n"
@@ -665,9 +724,10 @@ static void usage(FILE *out)
           "  --per-scan                 with --calibrate: a fluid-gas cut t_fg per scan (runs\n"
           "                             sharing Gamma, E_cb, eps, s_crit): in log T_g over its\n"
           "                             homogeneous runs and the dense and dilute parts of its\n"
-          "                             coexisting runs, the gap just above the hottest dense\n"
-          "                             part (else Otsu's cut), kept where T_g jumps by more\n"
-          "                             than %g decades; else the nearest scan's in log Gamma,\n"
+          "                             coexisting runs, the widest gap between their dense\n"
+          "                             and their dilute parts (else Otsu's cut, kept where T_g\n"
+          "                             jumps by more than %g decades); else the nearest\n"
+          "                             scan's in log Gamma,\n"
           "                             else the global cut.  For sweeps over Gamma, where the\n"
           "                             gas's T_g/E_cb moves by decades.  The solid cut t_sf is\n"
           "                             then redone on the homogeneous runs below their own\n"

@@ -26,15 +26,17 @@ $(OUT)/orderparam.tsv: $(POINTS) $(BIN)/wetgran-orderparam | $(OUT)
 $(OUT)/boundary.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
 	$(BIN)/wetgran-boundary --x estar --y gamma --label label --logx $< > $@.tmp && mv $@.tmp $@
 
-# The fit over every f-fgc midpoint also takes the low-Gamma rows' line (near E* = 0.7, below
-# the bulge) and, where the fluid returns at large E* (Gamma <= 1.5), that boundary too; the
-# thesis's vertical line is where gravity no longer matters, so it is fitted again over the
-# rows Gamma >= vertical_gamma_min (conf; default 8): key vertical_f_fgc_hi_gamma.
+# The f-fgc line is where the fluid turns coexisting as E* rises: the fit takes the midpoints
+# with f at the smaller E* ("f<fgc"), not those where a coexistence gives way to a fluid again
+# at larger E* (Gamma <= 1.5, and at Gamma = 8 in fig3_9).  Over all rows it also takes the
+# low-Gamma rows' line (near E* = 0.7, below the bulge); the thesis's vertical line is where
+# gravity no longer matters, so it is fitted again over the rows Gamma >= vertical_gamma_min
+# (conf; default 8): key vertical_f_fgc_hi_gamma.
 VGMIN := $(or $(call conf,vertical_gamma_min),8)
 $(OUT)/results.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
-	{ $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical f:fgc $< && \
+	{ $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical "f<fgc" $< && \
 	  awk -F'\t' -v g=$(VGMIN) '/^#/ || $$1 == "file" || $$2 >= g' $< | \
-	    $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical f:fgc - | \
+	    $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical "f<fgc" - | \
 	    awk -F'\t' -v OFS='\t' 'NR > 1 { sub(/^vertical_f_fgc/, "vertical_f_fgc_hi_gamma", $$1); print }'; } > $@.tmp && mv $@.tmp $@
 
 $(FIGURE): $(OUT)/results.tsv $(OUT)/boundary.tsv ../phase_diagram.gp | $(FIGDIR)

@@ -50,6 +50,19 @@ check "grid: vertical_f_fgc_n ($n) counts the midpoints" \
   test "$n" = "$(awk 'NR > 1' "$tmp/grid.out" | wc -l)"
 check "grid: the pair may be given in either order" \
   bash -c "[ \"\$('$tool' ${cols[*]} --logx --fit-vertical fgc:f '$tmp/grid.tsv' | awk -F'\t' '\$1 == \"vertical_fgc_f\" { print \$2 }')\" = '$v' ]"
+# (1b) the same grid with the fluid back at E* >= 10^0.75 (as at Gamma = 1.2 in Fig. 3.4a):
+# f:fgc also averages that second boundary (10^0.625), f<fgc only the edges with f at the
+# smaller E* (10^0.125), and fgc<f only the others.
+awk -F'\t' -v OFS='\t' 'NR > 2 && $1 > 5 { $3 = "f" } { print }' "$tmp/grid.tsv" > "$tmp/back.tsv"
+"$tool" "${cols[@]}" --logx --fit-vertical f:fgc --fit-vertical "f<fgc" --fit-vertical "fgc<f" "$tmp/back.tsv" > "$tmp/back.fit"
+vals=$(awk -F'\t' 'NR > 1 && $1 !~ /_n$/ { printf "%s ", $2 }' "$tmp/back.fit")
+set -- $vals
+check "returning fluid: f:fgc mixes both boundaries ($1, between 10^0.125 and 10^0.625)" \
+  awk -v a="$1" 'BEGIN { exit !(a > 1.4 && a < 4.1) }'
+check "returning fluid: f<fgc = $2 is the left boundary 10^0.125" lognear "$2" 1.3335214 1e-6
+check "returning fluid: fgc<f = $3 is the right boundary 10^0.625" lognear "$3" 4.2169650 1e-6
+check "returning fluid: f<fgc keeps the key vertical_f_fgc" \
+  test "$(awk -F'\t' 'NR == 4 { print $1 }' "$tmp/back.fit")" = vertical_f_fgc
 check "grid: same output from stdin" \
   bash -c "'$tool' ${cols[*]} --logx < '$tmp/grid.tsv' | cmp -s - '$tmp/grid.out'"
 
