@@ -33,4 +33,10 @@ check "a key missing from results.tsv fails" bash -c "[ $rc -ne 0 ] && grep -q '
 FIGURES_SKIP="figA" WG_TOP=$tmp "$script" full > "$tmp/out6"; rc=$?
 check "a figure in FIGURES_SKIP is reported SKIP, not checked (only figB fails here)" \
   bash -c "grep -q '^SKIP  figA' '$tmp/out6' && ! grep -q 'FAIL  figA' '$tmp/out6' && grep -q 'FAIL  figB' '$tmp/out6'"
+# a tolerance "-": the key is not checked at that profile (the quick scan has no such point)
+ref figA $'x\t1.0\t0.2\t0.1\tsource A\nw\t3.0\t-\t0.1\tfull only'
+res figA $'x\t1.1\t0.01'
+WG_TOP=$tmp FIGURES_SKIP=figB "$script" quick > "$tmp/out7"; rc=$?
+check "a key whose quick tolerance is '-' is not checked at quick (missing, still exit 0)" \
+  bash -c "[ $rc -eq 0 ] && ! grep -q 'key w' '$tmp/out7' && [ \"\$(tail -n 1 '$tmp/out7')\" = '1 passed, 0 failed' ]"
 summary
