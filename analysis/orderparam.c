@@ -725,11 +725,11 @@ static void usage(FILE *out)
           "                             sharing Gamma, E_cb, eps, s_crit): in log T_g over its\n"
           "                             homogeneous runs and the dense and dilute parts of its\n"
           "                             coexisting runs, the widest gap between their dense\n"
-          "                             and their dilute parts (else Otsu's cut, kept where T_g\n"
-          "                             jumps by more than %g decades); else the nearest\n"
-          "                             scan's in log Gamma,\n"
-          "                             else the global cut.  For sweeps over Gamma, where the\n"
-          "                             gas's T_g/E_cb moves by decades.  The solid cut t_sf is\n"
+          "                             and their dilute parts, kept if wider than %g decades\n"
+          "                             (without coexistence Otsu's cut, kept where T_g jumps\n"
+          "                             by more than %g decades); else the nearest scan's in\n"
+          "                             log Gamma, else the global cut.  For sweeps over Gamma,\n"
+          "                             where the gas's T_g/E_cb moves by decades.  The solid cut t_sf is\n"
           "                             then redone on the homogeneous runs below their own\n"
           "                             scan's t_fg\n"
           "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
@@ -740,7 +740,7 @@ static void usage(FILE *out)
           "  --along estar|gamma        the scan variable of --inflection (default estar; gamma:\n"
           "                             the s-f line of Fig. 3.11, a scan in Gamma at fixed E*)\n",
           DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
-          default_thresholds.t_fg, default_thresholds.dn, DEFAULT_RELATIVE_DN, JUMP_DECADES);
+          default_thresholds.t_fg, default_thresholds.dn, DEFAULT_RELATIVE_DN, JUMP_COEX_DECADES, JUMP_DECADES);
 }
 
 static int parse_double(const char *opt, const char *s, double *v)
