@@ -33,11 +33,24 @@ $(OUT)/boundary.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
 # gravity no longer matters, so it is fitted again over the rows Gamma >= vertical_gamma_min
 # (conf; default 8): key vertical_f_fgc_hi_gamma.
 VGMIN := $(or $(call conf,vertical_gamma_min),8)
-$(OUT)/results.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
+WAITS := $(call conf,fluid_waits)
+$(OUT)/results.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary $(if $(WAITS),$(OUT)/lifetimes.tsv ../fluid_line_after.awk)
 	{ $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical "f<fgc" $< && \
 	  awk -F'\t' -v g=$(VGMIN) '/^#/ || $$1 == "file" || $$2 >= g' $< | \
 	    $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical "f<fgc" - | \
-	    awk -F'\t' -v OFS='\t' 'NR > 1 { sub(/^vertical_f_fgc/, "vertical_f_fgc_hi_gamma", $$1); print }'; } > $@.tmp && mv $@.tmp $@
+	    awk -F'\t' -v OFS='\t' 'NR > 1 { sub(/^vertical_f_fgc/, "vertical_f_fgc_hi_gamma", $$1); print }'; \
+	  $(if $(WAITS),awk -f ../fluid_line_after.awk -v waits="$(WAITS)" -v prefix=vertical_f_fgc_hi_gamma $(OUT)/lifetimes.tsv;) } > $@.tmp && mv $@.tmp $@
+
+# The f-fgc line against the time one watches (conf fluid_waits = T1 T2 ...): near the line the
+# fluid is metastable, and coexistence nucleates after a lifetime that grows steeply as E*
+# falls.  lifetimes.tsv: per run of the rows Gamma >= vertical_gamma_min, when its T_g jumped
+# to the bubble's (fluid_lifetime.awk); results: the line as placed by someone who stopped
+# each run at T (fluid_line_after.awk), keys vertical_f_fgc_hi_gamma_t<T>.
+$(OUT)/lifetimes.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-series ../fluid_lifetime.awk
+	awk -F'\t' -v g=$(VGMIN) '$$1 !~ /^#/ && $$1 != "file" && $$2 >= g && ($$NF == "f" || $$NF == "fgc") { print $$1, $$2, $$3, $$NF }' $< | \
+	  while read -r run gamma estar label; do \
+	    $(BIN)/wetgran-series $$run temperature | awk -v r=$$run -v g=$$gamma -v e=$$estar -v l=$$label 'NR > 1 { print r, g, e, l, $$1, $$2 }'; \
+	  done | awk -f ../fluid_lifetime.awk > $@.tmp && mv $@.tmp $@
 
 $(FIGURE): $(OUT)/results.tsv $(OUT)/boundary.tsv ../phase_diagram.gp | $(FIGDIR)
 	$(call gnuplot,../phase_diagram.gp,op='$(OUT)/orderparam.tsv'; bd='$(OUT)/boundary.tsv'; res='$(OUT)/results.tsv'; scrit=$(SCRIT); ecb=$(ECB))

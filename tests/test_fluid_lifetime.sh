@@ -1,0 +1,38 @@
+#!/bin/bash
+# experiments/fluid_lifetime.awk and fluid_line_after.awk on synthetic T_g series of two rows of
+# Gamma: a run that stays fluid has tau inf, a fluid that nucleates coexistence has the time its
+# T_g climbs back to the row's level (the geometric mean of the hottest f and the coldest fgc
+# run's late T_g), a gas that condenses straight into coexistence has tau 0, and the line after
+# a wait T is the mean over rows of the midpoint between the last run fluid at T and the next.
+set -u
+. "$(dirname "$0")/checks.sh"
+exp=$(cd "$(dirname "$0")/../experiments" && pwd)
+# series: start as a gas (T = 20), fluid (T = 1) from t = 10, coexistence (T = 9) from t = jump
+series() {  # run gamma estar label jump(-1: never; 0: no fluid at all)
+  for t in $(seq 0 10 1000); do
+    if [ "$t" -eq 0 ]; then T=20
+    elif [ "$5" -eq 0 ]; then T=9
+    elif [ "$5" -gt 0 ] && [ "$t" -ge "$5" ]; then T=9
+    else T=1; fi
+    echo "$1 $2 $3 $4 $t $T"
+  done
+}
+{ series a 10 0.9 f -1; series b 10 1.0 fgc 400; series c 10 1.1 fgc 100; series d 10 1.2 fgc 0
+  series e 20 0.9 f -1; series f 20 1.0 fgc 200; series g 20 1.1 fgc 50; } | awk -f "$exp/fluid_lifetime.awk" > "$tmp/lt.tsv"
+tau() { awk -F'\t' -v g=$1 -v e=$2 '$1 == g && $2 == e { print $4 }' "$tmp/lt.tsv"; }
+check "a fluid that never nucleates: tau inf" test "$(tau 10 0.9)" = inf
+check "nucleation at t = 400: tau 400" test "$(tau 10 1.0)" = 400
+check "nucleation at t = 50 in the other row: tau 50" test "$(tau 20 1.1)" = 50
+check "no fluid ever formed: tau 0" test "$(tau 10 1.2)" = 0
+check "the row's level is sqrt(1 x 9) = 3" test "$(awk -F'\t' 'NR == 2 { print $5 }' "$tmp/lt.tsv")" = 3
+awk -f "$exp/fluid_line_after.awk" -v waits="20 150 300 600" -v prefix=L "$tmp/lt.tsv" > "$tmp/line.tsv"
+val() { awk -F'\t' -v k=$1 '$1 == k { print $2 }' "$tmp/line.tsv"; }
+near() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a - b < 1e-4 && b - a < 1e-4) }'; }
+# t = 20: row 10's first coexistence is 1.2 (tau 0), row 20 has none yet (its 1.1 nucleates at 50)
+check "after 20: one row, line at sqrt(1.1 x 1.2)" bash -c "[ $(val L_t20_n) = 1 ] && $(declare -f near); near $(val L_t20) $(awk 'BEGIN { print sqrt(1.32) }')"
+# t = 150: both rows at sqrt(1.0 x 1.1)
+check "after 150: both rows at sqrt(1.0 x 1.1), error 0" bash -c "[ $(val L_t150_n) = 2 ] && $(declare -f near); near $(val L_t150) $(awk 'BEGIN { print sqrt(1.1) }') && [ \"$(awk -F'\t' '$1 == "L_t150" { print $3 }' "$tmp/line.tsv")\" = 0 ]"
+# t = 300: row 10 still at sqrt(1.1), row 20 at sqrt(0.9)
+check "after 300: mean of sqrt(1.1) and sqrt(0.9)" bash -c "$(declare -f near); near $(val L_t300) $(awk 'BEGIN { print (sqrt(1.1) + sqrt(0.9)) / 2 }')"
+check "after 600: both rows at sqrt(0.9 x 1.0)" bash -c "$(declare -f near); near $(val L_t600) $(awk 'BEGIN { print sqrt(0.9) }')"
+summary
