@@ -6,14 +6,19 @@
 color(l) = l eq "s" ? 0x909090 : l eq "f" ? 0x3070d0 : l eq "g" ? 0xf0a030 : \
            l eq "fgc" ? 0xffffff : l eq "sfc" ? 0xd0d0ff : l eq "sgc" ? 0xffe0c0 : 0xff0000
 fit_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc\" { print $2 }' %s", res)))
+hi_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc_hi_gamma\" { v = $2 } END { print v + 0 }' %s", res)))
+# the line against the time one watches (keys vertical_f_fgc_hi_gamma_t<T>), drawn as an inset
+waits = system(sprintf("awk -F'\t' '$1 ~ /^vertical_f_fgc_hi_gamma_t[0-9]+$/ && $2 != \"nan\" { t = $1; sub(/.*_t/, \"\", t); printf \"%%s %%s %%s\\n\", t, $2, ($3 == \"nan\" ? 0 : $3) }' %s", res))
 stats op using 3 every ::1 nooutput
 xmin = STATS_min / 1.3; xmax = STATS_max * 1.3
 stats op using 2 every ::1 nooutput
 ymin = STATS_min / 1.12; ymax = STATS_max * 1.6
 do for [k = 1:2] {
   reset
-  if (k == 1) { set terminal pngcairo size 1000,750 font ",12"; set output png } \
-  else { set terminal pdfcairo size 10in,7.5in font ",12"; set output pdf }
+  wide = strlen(waits) > 0 ? 1.3 : 1   # room for the t_w panel
+  pw = 1000 * wide; dw = 10 * wide
+  if (k == 1) { set terminal pngcairo size pw,750 font ",12"; set output png } \
+  else { set terminal pdfcairo size dw*1in,7.5in font ",12"; set output pdf }
   set logscale xy
   set xrange [xmin:xmax]; set yrange [ymin:ymax]
   set xtics (0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.25, 1.5, 2, 3, 4, 5)
@@ -21,11 +26,30 @@ do for [k = 1:2] {
   set xlabel "E^*"
   set ylabel "{/Symbol G}"
   set key below box
-  set arrow 1 from fit_x, graph 0.99 to fit_x, graph 0.92 head filled lw 2 lc rgb "black"
-  set label 1 sprintf("f-fgc: E* = %.3g", fit_x) at fit_x * 1.03, graph 0.96 left
+  set tmargin 4
+  set arrow 1 from fit_x, graph 1.09 to fit_x, graph 1.0 head filled lw 2 lc rgb "black"
+  set label 1 sprintf("f-fgc: E* = %.3g ", fit_x) at fit_x, graph 1.06 right
+  if (hi_x > 0) {
+    set arrow 2 from hi_x, graph 1.09 to hi_x, graph 1.0 head filled lw 2 lc rgb "#3070d0"
+    set label 2 sprintf(" {/Symbol G} {/Symbol \263} 8: %.3g", hi_x) at hi_x, graph 1.06 left tc rgb "#3070d0"
+  }
   set samples 200
+  if (strlen(waits) > 0) { set multiplot; set origin 0, 0; set size 0.75, 1 }
   plot op using 3:2:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
        op using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; grey s, blue f, white fgc, orange g)", \
        bd using 1:2 every ::1 with points pt 7 ps 0.8 lc rgb "red" title "boundary (Delaunay midpoints)", \
        2 * x * ecb / scrit title "A = s_{crit}" with lines lw 2 lc rgb "black"
+  if (strlen(waits) > 0) {
+    set origin 0.75, 0.3; set size 0.25, 0.5
+    unset arrow; unset label; unset key; set tmargin
+    set logscale x; unset logscale y
+    set xrange [*:*]; set yrange [*:*]; set autoscale
+    set xtics auto; set ytics auto; set format x "10^{%T}"
+    set xlabel "t_w [(d/g)^{1/2}]"; set ylabel "f-fgc E^*, {/Symbol G} {/Symbol \263} 8"
+    set title "metastable fluid:\nthe line if runs stop at t_w"
+    set key inside bottom left nobox
+    plot 1.02 with lines lc rgb "grey" dt 2 title "thesis 1.02", \
+         "<echo '".waits."'" using 1:2:3 with yerrorlines pt 7 lc rgb "#3070d0" notitle
+    unset multiplot
+  }
 }
