@@ -16,6 +16,9 @@
 #define DRIFT_REL 0.05       /* ... and by more than 5 % is not stationary, */
 #define DRIFT_GROSS 0.5      /* nor is one whose halves differ by more than half */
 #define QUINTILE 0.2         /* densest / most dilute fraction of the bins */
+#define MSER_BATCH 5         /* MSER-5: the warm-up rule works on means of 5 samples */
+#define WARMUP_IN_WINDOW 0.1 /* a window may begin this fraction of its length before the
+                                warm-up's end: MSER's estimate of it scatters by ~ a batch */
 
 typedef struct thresholds {
   double t_sf;   /* T_g / E_cb below which a region is solid */
@@ -39,6 +42,7 @@ typedef struct row {
   const char *file;
   double gamma, estar, estar_d, e_cb, eps, s_crit;
   double t0, t1, drift;
+  double t_settle;  /* where T_g's warm-up ends (MSER-5), NAN: not within the run's first half */
   int stationary;
   double tg, tg_err, tg_dense, tg_dilute, dn_cb, dn_area;
   double rel_contrast; /* Delta n_area over the largest packing fraction of the profile */
@@ -104,6 +108,43 @@ static void window_mean(const double *t, const double *v, size_t n, double t0, d
   }
   double var = (bs2 - bs * bs / BLOCKS) / (BLOCKS - 1);
   *err = var > 0 ? sqrt(var / BLOCKS) : 0;
+}
+
+/* The end of the warm-up of a series (MSER-5; White, Simulation 69, 323 (1997)): over the
+   means z_j of batches of MSER_BATCH samples, the truncation d that minimises the squared
+   standard error of the truncated mean, sum_{j>=d} (z_j - zbar_d)^2 / (m - d)^2, searched over
+   the first half of the batches.  A minimum at the end of that half means the series has not
+   settled (still relaxing or drifting); NAN then.  Returns the time of the first sample kept. */
+static double mser_settle(const double *t, const double *v, size_t n)
+{
+  size_t m = n / MSER_BATCH;
+  if (m < 4) return NAN;
+  double *z = malloc(sizeof *z * m);
+  if (!z) return NAN;
+  for (size_t j = 0; j < m; j++) {
+    double x = 0;
+    for (size_t k = 0; k < MSER_BATCH; k++) x += v[j * MSER_BATCH + k];
+    z[j] = x / MSER_BATCH;
+  }
+  /* suffix sums, from the end backwards: S1 = sum z, S2 = sum z^2 over j >= d */
+  size_t half = m / 2, best = 0;
+  double s1 = 0, s2 = 0, best_se = INFINITY;
+  for (size_t j = m; j-- > half + 1;) {
+    s1 += z[j];
+    s2 += z[j] * z[j];
+  }
+  for (size_t d = half + 1; d-- > 0;) {
+    s1 += z[d];
+    s2 += z[d] * z[d];
+    double k = (double)(m - d);
+    double se = (s2 - s1 * s1 / k) / (k * k);
+    if (se <= best_se) {
+      best_se = se;
+      best = d;
+    }
+  }
+  free(z);
+  return best >= half ? NAN : t[best * MSER_BATCH];
 }
 
 /* Average of y over the bins whose key lies in the top (top = 1) or bottom quintile. */
@@ -202,6 +243,7 @@ static int measure(const char *path, row *r)
   r->t1 = t_end;
   double first, second;
   window_mean(t, v, n, r->t0, r->t1, &r->tg, &r->tg_err, &first, &second);
+  r->t_settle = mser_settle(t, v, n);
   free(t);
   free(v);
   double scale = r->e_cb > 0 ? r->e_cb : 1;
@@ -209,8 +251,11 @@ static int measure(const char *path, row *r)
   r->tg_err /= scale;
   double half_err = isfinite(r->tg_err) ? r->tg_err * sqrt(2.0) * scale : 0;
   r->drift = (second - first) / (0.5 * (first + second));
-  r->stationary = !((fabs(second - first) > DRIFT_SIGMAS * half_err && fabs(r->drift) > DRIFT_REL) ||
-                    fabs(r->drift) > DRIFT_GROSS);
+  int drifting = (fabs(second - first) > DRIFT_SIGMAS * half_err && fabs(r->drift) > DRIFT_REL) ||
+                 fabs(r->drift) > DRIFT_GROSS;
+  /* the window must also lie in the stationary part: after the warm-up has ended */
+  r->stationary = !drifting && isfinite(r->t_settle) &&
+                  r->t_settle <= r->t0 + WARMUP_IN_WINDOW * (r->t1 - r->t0);
 
   r->has_profiles = wg_h5_exists(f, "/observables/profiles/x");
   r->tg_dense = r->tg_dilute = r->dn_cb = r->dn_area = r->rel_contrast = NAN;
@@ -647,6 +692,7 @@ static int write_h5(const char *path, const row *rows, size_t n, const threshold
       {"dn_area", "1", "max - min of the packing fraction", offsetof(row, dn_area)},
       {"rel_contrast", "1", "dn_area over the largest packing fraction of the profile", offsetof(row, rel_contrast)},
       {"t_fg", "E_cb", "fluid-gas cut of the run's scan (--per-scan; NaN: the global one)", offsetof(row, t_fg)},
+      {"t_settle", "sqrt(d/g)", "end of T_g's warm-up (MSER-5; NaN: not settled within the run's first half)", offsetof(row, t_settle)},
   };
   hsize_t dims[1] = {n};
   int st = WG_OK;
@@ -688,9 +734,15 @@ static void usage(FILE *out)
           "Order parameters of shaken runs (thesis App. 3.A), one tab-separated row per run:\n"
           "  gamma estar estar_d e_cb eps   parameters of the run\n"
           "  t0 t1                          averaging window: [profile_start, t_end]\n"
-          "  stationary drift               0 if the window's two halves differ by more than\n"
-          "                                 %g errors and %g %%, or by more than %g %%\n"
-          "                                 (drift: their relative difference)\n"
+          "  stationary drift               1 if the window lies in the run's stationary part:\n"
+          "                                 after T_g's warm-up (MSER-5 over the whole series;\n"
+          "                                 the window may start up to %g %% of its length early;\n"
+          "                                 a run whose warm-up does not end within its first\n"
+          "                                 half never became stationary), and its two halves\n"
+          "                                 differ by at most %g errors or %g %%, and by at most\n"
+          "                                 %g %% (drift: their relative difference).  Where the\n"
+          "                                 warm-up ends goes to stderr for runs that fail, and\n"
+          "                                 for every run to --h5 (/orderparam/t_settle)\n"
           "  tg tg_err                      mean T_g (Eq. 3.2) / E_cb over the window (dry runs:\n"
           "                                 in m g d) and its error from %d block means\n"
           "  tg_dense tg_dilute             T_g / E_cb of the densest and most dilute fifth of\n"
@@ -739,7 +791,7 @@ static void usage(FILE *out)
           "                             key/value/error rows (inelastic f-g boundary, Fig. 3.29)\n"
           "  --along estar|gamma        the scan variable of --inflection (default estar; gamma:\n"
           "                             the s-f line of Fig. 3.11, a scan in Gamma at fixed E*)\n",
-          DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
+          100 * WARMUP_IN_WINDOW, DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
           default_thresholds.t_fg, default_thresholds.dn, DEFAULT_RELATIVE_DN, JUMP_COEX_DECADES, JUMP_DECADES);
 }
 
@@ -830,9 +882,17 @@ int main(int argc, char **argv)
     for (size_t i = 0; i < nf; i++) {
       row *r = &rows[i];
       label(r, &th);
-      if (!r->stationary)
-        fprintf(stderr, "wetgran-orderparam: %s: not stationary in [%g, %g] (T_g drifts by %.0f %%)\n",
-                r->file, r->t0, r->t1, 100 * r->drift);
+      if (!r->stationary) {
+        if (!isfinite(r->t_settle))
+          fprintf(stderr, "wetgran-orderparam: %s: never stationary: T_g has not settled within the "
+                  "run's first half (window [%g, %g]: drifts by %.0f %%)\n", r->file, r->t0, r->t1, 100 * r->drift);
+        else if (r->t_settle > r->t0)
+          fprintf(stderr, "wetgran-orderparam: %s: not stationary in [%g, %g]: T_g settles only at t = %g "
+                  "(drift %.0f %%)\n", r->file, r->t0, r->t1, r->t_settle, 100 * r->drift);
+        else
+          fprintf(stderr, "wetgran-orderparam: %s: not stationary in [%g, %g] (T_g drifts by %.0f %%)\n",
+                  r->file, r->t0, r->t1, 100 * r->drift);
+      }
       printf("%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%d\t%.3g\t%.6g\t%.3g\t%.6g\t%.6g\t%.6g\t%.6g\t%.4g\t%s\n",
              r->file, r->gamma, r->estar, r->estar_d, r->e_cb, r->eps, r->t0, r->t1, r->stationary,
              r->drift, r->tg, r->tg_err, r->tg_dense, r->tg_dilute, r->dn_cb, r->dn_area,

@@ -1,7 +1,8 @@
 #!/bin/bash
 # wetgran-orderparam on real runs: Eq. 3.3 contrasts agree with the profiles they come from,
 # a cold bound state is labelled fluid and a hot one gas, a window that has not settled is
-# flagged, and --calibrate finds the fluid/gas cut between the two.
+# flagged with where the warm-up ends (or that it never does), and --calibrate finds the
+# fluid/gas cut between the two.
 set -u
 bin=${WG_BIN:?}
 scenes=$(cd "$(dirname "$0")/../sim/scenes" && pwd)
@@ -27,8 +28,30 @@ check "tg is the window mean of the temperature series over E_cb: $(col cold tg)
 
 "$bin/wetgran-orderparam" "$tmp/settling.h5" > "$tmp/op2.tsv" 2> "$tmp/op2.err"
 check "a window that starts in the hot initial state is flagged as not stationary" \
-  bash -c "awk -F'\t' 'NR == 2 { exit !(\$9 == 0) }' '$tmp/op2.tsv' && grep -q 'not stationary' '$tmp/op2.err'"
-check "settled runs are not flagged" bash -c "! grep -q 'not stationary' '$tmp/op.err'"
+  bash -c "awk -F'\t' 'NR == 2 { exit !(\$9 == 0) }' '$tmp/op2.tsv' && grep -q -E '(not|never) stationary' '$tmp/op2.err'"
+check "settled runs are not flagged" bash -c "! grep -q -E '(not|never) stationary' '$tmp/op.err'"
+# where the warm-up ends (MSER-5): a gas started at 400 E_cb cools into a fluid of ~1 E_cb
+long="n=300 lx=100 t_end=600 profile_bins=25 dt_series=1 dt_checkpoint=0 estar=0.5 tg_init=400"
+"$bin/wetgran-run" "$scenes/shake2d.ini" $long profile_start=0 -q -o "$tmp/settle0.h5" 2>/dev/null
+"$bin/wetgran-run" "$scenes/shake2d.ini" $long profile_start=300 -q -o "$tmp/settle300.h5" 2>/dev/null
+"$bin/wetgran-orderparam" --h5 "$tmp/st.h5" "$tmp/settle0.h5" "$tmp/settle300.h5" > "$tmp/op3.tsv" 2> "$tmp/op3.err"
+ts=$(sed -n 's/.*settle0.h5: not stationary in \[0, 600\]: T_g settles only at t = \([0-9.]*\).*/\1/p' "$tmp/op3.err")
+check "a window from t = 0 is flagged with the end of the warm-up (t = ${ts:-none})" test -n "$ts"
+"$bin/wetgran-series" "$tmp/settle0.h5" temperature > "$tmp/ser.tsv"
+check "before that end T_g is more than 3 times its later mean, after it within 20 % of it" \
+  awk -F'\t' -v ts="${ts:-0}" 'NR > 1 { if ($1 < ts) { a += $2; na++ } else { b += $2; nb++; v[nb] = $2 } }
+    END { m = b / nb; late = 0; for (i = 1; i <= 10; i++) late += v[i]; late /= 10
+          exit !(na > 0 && a / na > 3 * m && late < 1.2 * m && late > 0.8 * m) }' "$tmp/ser.tsv"
+check "the same run averaged from t = 300, after the warm-up, is stationary" \
+  bash -c "! grep -q settle300 '$tmp/op3.err' && awk -F'\t' '\$1 ~ /settle300/ { exit !(\$9 == 1) }' '$tmp/op3.tsv'"
+h5dump -d /orderparam/t_settle -y -o "$tmp/ts.txt" "$tmp/st.h5" > /dev/null 2>&1
+check "--h5 gives every run's end of warm-up (/orderparam/t_settle: $(tr -s ', \n' '  ' < "$tmp/ts.txt"))" \
+  bash -c "[ \"\$(tr -s ', \n' '  ' < '$tmp/ts.txt' | awk '{ print \$1, \$2 }')\" = '$ts $ts' ]"
+"$bin/wetgran-run" "$scenes/shake2d.ini" n=300 lx=100 t_end=8 profile_start=0 profile_bins=25 dt_series=0.05 \
+  dt_checkpoint=0 estar=0.5 tg_init=400 -q -o "$tmp/short.h5" 2>/dev/null
+"$bin/wetgran-orderparam" "$tmp/short.h5" > /dev/null 2> "$tmp/op4.err"
+check "a run still cooling at its end (8 t.u. from 400 E_cb) never became stationary" \
+  grep -q 'short.h5: never stationary' "$tmp/op4.err"
 
 "$bin/wetgran-orderparam" --calibrate "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/cal.tsv" 2> "$tmp/cal.err"
 tfg=$(awk -F"\t" "NR == 1 { print \$4 }" "$tmp/cal.tsv")
