@@ -884,8 +884,8 @@ int main(int argc, char **argv)
       label(r, &th);
       if (!r->stationary) {
         if (!isfinite(r->t_settle))
-          fprintf(stderr, "wetgran-orderparam: %s: never stationary: T_g has not settled within the "
-                  "run's first half (window [%g, %g]: drifts by %.0f %%)\n", r->file, r->t0, r->t1, 100 * r->drift);
+          fprintf(stderr, "wetgran-orderparam: %s: never became stationary: T_g still settling at half "
+                  "the run (MSER-5; window [%g, %g] drifts by %.0f %%)\n", r->file, r->t0, r->t1, 100 * r->drift);
         else if (r->t_settle > r->t0)
           fprintf(stderr, "wetgran-orderparam: %s: not stationary in [%g, %g]: T_g settles only at t = %g "
                   "(drift %.0f %%)\n", r->file, r->t0, r->t1, r->t_settle, 100 * r->drift);
