@@ -18,7 +18,7 @@
 #define QUINTILE 0.2         /* densest / most dilute fraction of the bins */
 #define MSER_BATCH 5         /* MSER-5: the warm-up rule works on means of 5 samples */
 #define WARMUP_IN_WINDOW 0.1 /* a window may begin this fraction of its length before the
-                                warm-up's end: MSER's estimate of it scatters by ~ a batch */
+                                warm-up's end: so short a tail of it barely moves the mean */
 
 typedef struct thresholds {
   double t_sf;   /* T_g / E_cb below which a region is solid */
