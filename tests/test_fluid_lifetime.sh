@@ -3,7 +3,8 @@
 # Gamma: a run that stays fluid has tau inf, a fluid that nucleates coexistence has the time its
 # T_g climbs back to the row's level (the geometric mean of the hottest f and the coldest fgc
 # run's late T_g), a gas that condenses straight into coexistence has tau 0, and the line after
-# a wait T is the mean over rows of the midpoint between the last run fluid at T and the next.
+# a wait T is the mean over rows of the midpoint between the last run fluid at T and the next;
+# and, on the filed fig3_4a full runs, the lifetimes and lines the README quotes.
 set -u
 . "$(dirname "$0")/checks.sh"
 exp=$(cd "$(dirname "$0")/../experiments" && pwd)
@@ -35,4 +36,26 @@ check "after 150: both rows at sqrt(1.0 x 1.1), error 0" bash -c "[ $(val L_t150
 # t = 300: row 10 still at sqrt(1.1), row 20 at sqrt(0.9)
 check "after 300: mean of sqrt(1.1) and sqrt(0.9)" bash -c "$(declare -f near); near $(val L_t300) $(awk 'BEGIN { print (sqrt(1.1) + sqrt(0.9)) / 2 }')"
 check "after 600: both rows at sqrt(0.9 x 1.0)" bash -c "$(declare -f near); near $(val L_t600) $(awk 'BEGIN { print sqrt(0.9) }')"
+# On the 129 filed runs of the full fig3_4a sweep (elastic, 20 000 t.u., data/runs), labelled
+# as experiments/phase_diagram.mk labels them: the late nucleation at E* = 0.9 (Gamma = 15, 50)
+# and the fluid that lasts (Gamma = 8, 30), and the line after 300 t.u. (every row between 1
+# and 1.05) and after the whole run (the Delaunay fit's 0.90).
+if [ -n "${WG_BIN:-}" ]; then
+  filed=$(cd "$(dirname "$0")/../data/runs/fig3_4a/full" && pwd)
+  "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 2> /dev/null |
+    awk -F'\t' '$1 !~ /^#/ && $1 != "file" && $2 >= 8 && ($NF == "f" || $NF == "fgc") { print $1, $2, $3, $NF }' |
+    while read -r run g e l; do
+      "$WG_BIN/wetgran-series" "$run" temperature | awk -v r="$run" -v g=$g -v e=$e -v l=$l 'NR > 1 { print r, g, e, l, $1, $2 }'
+    done | awk -f "$exp/fluid_lifetime.awk" > "$tmp/lt4a.tsv"
+  t4a() { awk -F'\t' -v g=$1 -v e=$2 '$1 == g && $2 == e { print $4 }' "$tmp/lt4a.tsv"; }
+  check "fig3_4a full, E* = 0.9: coexistence nucleates late at Gamma = 15 and 50 ($(t4a 15 0.9), $(t4a 50 0.9) t.u.), never at 8 and 30 ($(t4a 8 0.9), $(t4a 30 0.9))" \
+    bash -c "[ '$(t4a 8 0.9)' = inf ] && [ '$(t4a 30 0.9)' = inf ] && awk 'BEGIN { exit !($(t4a 15 0.9) > 3000 && $(t4a 15 0.9) < 5000 && $(t4a 50 0.9) > 5000 && $(t4a 50 0.9) < 7000) }'"
+  check "fig3_4a full, E* = 0.95: nucleation within 300-700 t.u. in every row ($(for g in 8 15 30 50; do printf '%s ' "$(t4a $g 0.95)"; done))" \
+    bash -c "for g in 8 15 30 50; do awk -v t=\$(awk -F'\t' -v g=\$g '\$1 == g && \$2 == 0.95 { print \$4 }' '$tmp/lt4a.tsv') 'BEGIN { exit !(t >= 300 && t <= 700) }' || exit 1; done"
+  awk -f "$exp/fluid_line_after.awk" -v waits="300 20000" -v prefix=L "$tmp/lt4a.tsv" > "$tmp/l4a.tsv"
+  check "fig3_4a full: the line after 300 t.u. is sqrt(1 x 1.05) in all 4 rows ($(awk -F'\t' '$1 == "L_t300" { print $2 }' "$tmp/l4a.tsv") over $(awk -F'\t' '$1 == "L_t300_n" { print $2 }' "$tmp/l4a.tsv"))" \
+    bash -c "[ $(awk -F'\t' '$1 == "L_t300_n" { print $2 }' "$tmp/l4a.tsv") = 4 ] && $(declare -f near); near $(awk -F'\t' '$1 == "L_t300" { print $2 }' "$tmp/l4a.tsv") $(awk 'BEGIN { print sqrt(1.05) }')"
+  check "fig3_4a full: after 20 000 t.u. it is 0.90 +- 0.01, the Delaunay fit's ($(awk -F'\t' '$1 == "L_t20000" { print $2 }' "$tmp/l4a.tsv"))" \
+    awk -F'\t' '$1 == "L_t20000" { exit !($2 > 0.89 && $2 < 0.91) }' "$tmp/l4a.tsv"
+fi
 summary
