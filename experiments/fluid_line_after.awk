@@ -3,7 +3,9 @@
 # fluid at t_w (tau > t_w) and the next one, the smallest whose coexistence has nucleated by
 # t_w; rows that coexist from their smallest E* or have not nucleated by t_w give none.
 # -v waits="T1 T2 ..."  -v prefix=KEY: rows KEY_t<T> (mean over rows, its standard error) and
-# KEY_t<T>_n (rows averaged), as in results.tsv.
+# KEY_t<T>_n (rows averaged), as in results.tsv.  -v table=1 instead: one line per wait and
+# row, "wait row estar estar_err" (the error half the E* step, as wetgran-transitions), rows
+# in increasing order.
 /^#/ || $1 == "gamma" { next }
 { r = ++m[$1]; e[$1, r] = $2; tau[$1, r] = ($4 == "inf") ? -1 : $4 + 0; rows[$1] = 1 }
 END {
@@ -14,6 +16,23 @@ END {
         x = e[g, j]; e[g, j] = e[g, j - 1]; e[g, j - 1] = x
         x = tau[g, j]; tau[g, j] = tau[g, j - 1]; tau[g, j - 1] = x
       }
+  if (table) {
+    nr = 0
+    for (g in rows) rl[++nr] = g
+    for (i = 2; i <= nr; i++)
+      for (j = i; j > 1 && rl[j - 1] + 0 > rl[j] + 0; j--) { x = rl[j]; rl[j] = rl[j - 1]; rl[j - 1] = x }
+    print "wait\trow\testar\testar_err"
+    for (a = 1; a <= nw; a++)
+      for (r = 1; r <= nr; r++) {
+        g = rl[r]
+        for (i = 1; i <= m[g]; i++)
+          if (tau[g, i] >= 0 && tau[g, i] <= w[a] + 0) {
+            if (i > 1) printf "%s\t%s\t%.6g\t%.3g\n", w[a], g, sqrt(e[g, i - 1] * e[g, i]), (e[g, i] - e[g, i - 1]) / 2
+            break
+          }
+      }
+    exit
+  }
   for (a = 1; a <= nw; a++) {
     s = 0; s2 = 0; c = 0
     for (g in rows)

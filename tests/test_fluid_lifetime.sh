@@ -36,6 +36,12 @@ check "after 150: both rows at sqrt(1.0 x 1.1), error 0" bash -c "[ $(val L_t150
 # t = 300: row 10 still at sqrt(1.1), row 20 at sqrt(0.9)
 check "after 300: mean of sqrt(1.1) and sqrt(0.9)" bash -c "$(declare -f near); near $(val L_t300) $(awk 'BEGIN { print (sqrt(1.1) + sqrt(0.9)) / 2 }')"
 check "after 600: both rows at sqrt(0.9 x 1.0)" bash -c "$(declare -f near); near $(val L_t600) $(awk 'BEGIN { print sqrt(0.9) }')"
+# the table mode: per wait and row (rows in increasing order), the midpoint and half the step
+awk -f "$exp/fluid_line_after.awk" -v table=1 -v waits="20 300" "$tmp/lt.tsv" > "$tmp/rows.tsv"
+check "table: header, then after 20 only row 10, after 300 rows 10 and 20 in order" \
+  test "$(cut -f1,2 "$tmp/rows.tsv" | tr '\t\n' ': ')" = "wait:row 20:10 300:10 300:20 "
+check "table: after 300, row 20 at sqrt(0.9 x 1.0), error half the step (0.05)" \
+  bash -c "$(declare -f near); near $(awk -F'\t' '$1 == 300 && $2 == 20 { print $3 }' "$tmp/rows.tsv") $(awk 'BEGIN { print sqrt(0.9) }') && [ $(awk -F'\t' '$1 == 300 && $2 == 20 { print $4 }' "$tmp/rows.tsv") = 0.05 ]"
 # On the 129 filed runs of the full fig3_4a sweep (elastic, 20 000 t.u., data/runs), labelled
 # as experiments/phase_diagram.mk labels them: the late nucleation at E* = 0.9 (Gamma = 15, 50)
 # and the fluid that lasts (Gamma = 8, 30), and the line after 300 t.u. (every row between 1
@@ -57,5 +63,29 @@ if [ -n "${WG_BIN:-}" ]; then
     bash -c "[ $(awk -F'\t' '$1 == "L_t300_n" { print $2 }' "$tmp/l4a.tsv") = 4 ] && $(declare -f near); near $(awk -F'\t' '$1 == "L_t300" { print $2 }' "$tmp/l4a.tsv") $(awk 'BEGIN { print sqrt(1.05) }')"
   check "fig3_4a full: after 20 000 t.u. it is 0.90 +- 0.01, the Delaunay fit's ($(awk -F'\t' '$1 == "L_t20000" { print $2 }' "$tmp/l4a.tsv"))" \
     awk -F'\t' '$1 == "L_t20000" { exit !($2 > 0.89 && $2 < 0.91) }' "$tmp/l4a.tsv"
+  # The 33 runs of the full fig3_5 sweep filed first (F_B = 1, 2, 8, 16 m g at Gamma = 30, a row
+  # per E_cb), labelled as its Makefile labels them: runs stopped at 300 t.u. put the line at
+  # sqrt(1 x 1.05) for the two weak bridges, as fig3_4a's rows, but lower for the strong ones
+  # (F_B = 8: 0.85 fluid for 320 t.u., 0.9 coexisting at once; F_B = 16: 0.65 for 540, 0.7 for
+  # 280), so short runs do not restore the thesis's E* = 1 at large E_cb; after 20 000 t.u. the
+  # lines are the ones wetgran-transitions cuts from the labels.
+  filed=$(cd "$(dirname "$0")/../data/runs/fig3_5/full" && pwd)
+  runs5=$(for e in 0.7 0.8 0.85 0.9 0.95 1 1.05 1.1 1.15 1.2 1.3 1.4 1.5 1.6; do printf '%s ' "$filed/F1_E$e.h5"; done
+          for e in 0.7 0.8 0.85 0.9 0.95 1 1.05 1.1 1.3 1.4; do printf '%s ' "$filed/F2_E$e.h5"; done
+          for e in 0.7 0.75 0.8 0.85 0.9; do printf '%s ' "$filed/F8_E$e.h5"; done
+          for e in 0.55 0.6 0.65 0.7; do printf '%s ' "$filed/F16_E$e.h5"; done)
+  "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast $runs5 2> /dev/null > "$tmp/op5.tsv"
+  awk -F'\t' '$1 !~ /^#/ && $1 != "file" && ($NF == "f" || $NF == "fgc") { print $1, $5, $3, $NF }' "$tmp/op5.tsv" |
+    while read -r run ecb e l; do
+      "$WG_BIN/wetgran-series" "$run" temperature | awk -v r="$run" -v g=$ecb -v e=$e -v l=$l 'NR > 1 { print r, g, e, l, $1, $2 }'
+    done | awk -f "$exp/fluid_lifetime.awk" > "$tmp/lt5.tsv"
+  awk -f "$exp/fluid_line_after.awk" -v table=1 -v waits="300 20000" "$tmp/lt5.tsv" > "$tmp/rows5.tsv"
+  line5() { awk -F'\t' -v w=$1 -v r=$2 '$1 == w && $2 == r { print $3 }' "$tmp/rows5.tsv"; }
+  check "fig3_5 full, after 300 t.u.: F_B = 1, 2 m g at sqrt(1.05) ($(line5 300 0.0711), $(line5 300 0.1422)), 8 at sqrt(0.85 x 0.9) ($(line5 300 0.5688)), 16 at sqrt(0.65 x 0.7) ($(line5 300 1.1376))" \
+    bash -c "$(declare -f near); near $(line5 300 0.0711) $(awk 'BEGIN { print sqrt(1.05) }') && near $(line5 300 0.1422) $(awk 'BEGIN { print sqrt(1.05) }') && near $(line5 300 0.5688) $(awk 'BEGIN { print sqrt(0.765) }') && near $(line5 300 1.1376) $(awk 'BEGIN { print sqrt(0.455) }')"
+  "$WG_BIN/wetgran-transitions" --x estar --group e_cb --pair f:fgc --logx "$tmp/op5.tsv" 2> /dev/null > "$tmp/tr5.tsv"
+  check "fig3_5 full, after 20 000 t.u.: every row's line is wetgran-transitions' f-fgc cut ($(cut -f3 "$tmp/tr5.tsv" | tail -n +2 | tr '\n' ' '))" \
+    bash -c "[ \$(tail -n +2 '$tmp/tr5.tsv' | wc -l) = 4 ] && tail -n +2 '$tmp/tr5.tsv' | while IFS=\$'\t' read -r g pair e err; do \
+      awk -v a=\$e -v b=\$(awk -F'\t' -v r=\$g '\$1 == 20000 && \$2 == r { print \$3 }' '$tmp/rows5.tsv') 'BEGIN { exit !(b != \"\" && a - b < 1e-4 && b - a < 1e-4) }' || exit 1; done"
 fi
 summary
