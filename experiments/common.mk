@@ -24,9 +24,14 @@ SHELL := /bin/bash
 # (Not .SECONDARY without prerequisites: that makes every target intermediate, and a missing
 # results.tsv is then not made while the figure is newer than the runs.)
 
-# parameters of the profile: one file of key=value words, a prerequisite of every run
+# parameters of the profile: one file of key=value words, a prerequisite of every run.
+# Read once, into the variables conf.<key> ($(call conf,KEY) is their value, empty when the
+# conf has no such key): one shell per lookup made a dry run of a full sweep take seconds.
 CONF := $(PROFILE).conf
-conf = $(shell grep -v '^\s*\#' $(CONF) | grep -E '^\s*$(1)\s*=' | sed 's/^[^=]*=\s*//')
+$(foreach kv,$(shell awk '/^[ \t]*\#/ { next } match($$0, /^[ \t]*[A-Za-z0-9_.]+[ \t]*=/) { \
+    k = substr($$0, 1, RLENGTH - 1); gsub(/[ \t]/, "", k); v = substr($$0, RLENGTH + 1); \
+    gsub(/^[ \t]+|[ \t]+$$/, "", v); gsub(/[ \t]+/, "^", v); print k ":=" v }' $(CONF)),$(eval conf.$(subst ^, ,$(kv))))
+conf = $(conf.$(strip $(1)))
 
 # runs of a sweep are independent: use the machine's cores unless told otherwise (a make
 # started by another one, e.g. for borrowed runs, shares its parent's job slots)
