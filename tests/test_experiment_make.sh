@@ -43,7 +43,7 @@ check "PARTIAL=1 draws its own figure" test -f "$tmp/fig/ex-partial.png"
 # no intermediate file (the tools under test stand in for bin/, a stamp for the fingerprint)
 bin=${WG_BIN:-$top/bin}
 touch "$tmp/engine"
-inter= broken= broken_partial=
+inter= broken= broken_partial= partial_runs=
 for e in "$top"/experiments/fig*/; do
   for p in quick full; do
     [ -f "$e$p.conf" ] || continue
@@ -52,13 +52,16 @@ for e in "$top"/experiments/fig*/; do
     f=$(grep -B4 '^#  File is an intermediate prerequisite' "$tmp/db" | grep -E '^[^#][^:]*:' | sed 's/:.*//')
     [ -n "$f" ] && inter="$inter $(basename "$e")/$p ($(echo "$f" | wc -l), e.g. $(echo "$f" | grep -m1 h5 || echo "$f" | head -n 1))"
     # PARTIAL=1 reaches the lenders too: a borrower must ask them for their partial outputs
-    # (or for their complete ones with PARTIAL=), which have rules there
-    make -C "$e" -n PROFILE=$p PARTIAL=1 BIN="$bin" ENGINE="$tmp/engine" > /dev/null 2>&1 ||
+    # (or for their complete ones with PARTIAL=), which have rules there; runs stay in
+    # out/<profile>/runs under PARTIAL=1, so no command may name out/<profile>-partial/runs
+    make -C "$e" -n PROFILE=$p PARTIAL=1 BIN="$bin" ENGINE="$tmp/engine" > "$tmp/dry" 2>&1 ||
       broken_partial="$broken_partial $(basename "$e")/$p"
+    grep -q -- "-partial/runs" "$tmp/dry" && partial_runs="$partial_runs $(basename "$e")/$p"
   done
 done
 check "every experiment's dry run succeeds (${broken:-all})" test -z "$broken"
 check "every experiment's dry run with PARTIAL=1 succeeds (${broken_partial:-all})" test -z "$broken_partial"
+check "with PARTIAL=1 every run is looked for in out/<profile>/runs (${partial_runs:-all})" test -z "$partial_runs"
 check "no file of any experiment is intermediate (${inter:-none})" test -z "$inter"
 
 # the top Makefile: `make fig3_4atd` (or make -j2 fig3_3 fig3_4atd) makes the figures whose
