@@ -20,6 +20,12 @@ check "the key's first line is the engine fingerprint" test "$(head -n 1 "$tmp/r
 "$top/scripts/archive-runs" "$tmp/runs" "$tmp/arch" 2> "$tmp/arch.err"
 check "archive-runs files it" grep -q '1 filed, 0 already there, 0 checkpoints' "$tmp/arch.err"
 check "the archived copy holds the same data (h5diff)" h5diff -q "$tmp/runs/r.h5" "$tmp/arch/r.h5"
+mkdir -p "$tmp/arch0"
+ARCHIVE_MAX_KB=1 "$top/scripts/archive-runs" "$tmp/runs" "$tmp/arch0" 2> "$tmp/arch.err"
+rc=$?
+check "a run over ARCHIVE_MAX_KB is refused: non-zero exit ($rc), named with its size" \
+  bash -c "[ $rc -ne 0 ] && grep -q 'r.h5 is [0-9]* kB repacked, over ARCHIVE_MAX_KB = 1: not filed' '$tmp/arch.err'"
+check "and leaves no file in the archive" bash -c "[ -z \"\$(ls -A '$tmp/arch0')\" ]"
 cp "$tmp/runs/r.h5" "$tmp/first.h5"
 rm "$tmp/runs/r.h5" "$tmp/runs/r.h5.key"
 run
