@@ -2,6 +2,10 @@
 # (white coexisting, orange homogeneous gas), the band's upper edge A_crit with its
 # resolution, the lower edge where the scan shows one, the fitted lines, and the thesis's two
 # fits A/d = -3.61 (eps - 1) + 0.24 (black) and -1.72 (eps - 1) + 0.24 (red).
+# fe: the fixed-E* rows' edges (full profile only; empty otherwise), all at eps = fe_eps
+if (!exists("fe")) fe = ""
+fe_eps = 0.963
+fixed_plot = strlen(fe) ? sprintf(", '%s' using (fe_eps + 0.004 * $0):3:4 every ::1 with yerrorbars pt 9 ps 1.5 lw 2 lc rgb 'dark-green' title 'A_{crit} at fixed E* = 5, 12 ({/Symbol G} = 2 E* E_{cb} / A; drawn right of 0.96)'", fe) : ""
 color(l) = l eq "fgc" ? 0xffffff : l eq "g" ? 0xf0a030 : 0xff0000
 a = real(system(sprintf("awk '$1 == \"acrit_line_a\" { print $2 }' %s", res)))
 b = real(system(sprintf("awk '$1 == \"acrit_line_b\" { print $2 }' %s", res)))
@@ -26,5 +30,5 @@ do for [k = 1:2] {
        a + b * (1 - x) title sprintf("fit: A_{crit}/d = %.2f + %.2f (1 - {/Symbol e})", a, b) with lines lw 2 dt 2 lc rgb "blue", \
        lower(x) title lower_title with lines lw 2 dt 3 lc rgb "blue", \
        0.24 - 3.61 * (x - 1) title "thesis: -3.61 ({/Symbol e} - 1) + 0.24" with lines lw 2 lc rgb "black", \
-       0.24 - 1.72 * (x - 1) title "thesis: -1.72 ({/Symbol e} - 1) + 0.24" with lines lw 2 lc rgb "red"
+       0.24 - 1.72 * (x - 1) title "thesis: -1.72 ({/Symbol e} - 1) + 0.24" with lines lw 2 lc rgb "red" @fixed_plot
 }
