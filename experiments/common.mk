@@ -10,9 +10,10 @@ ENGINE := $(BIN)/wetgran-run.engine
 # figures/<id>-partial.png, apart from the complete profile's
 RUNDIR := out/$(PROFILE)/runs
 OUT := out/$(PROFILE)$(if $(PARTIAL),-partial)
-# $(call made,RUNS): the runs of a sweep, or under PARTIAL only those already made
+# $(call made,RUNS): the runs of a sweep, or under PARTIAL only those already made, here or
+# filed in this experiment's run archive (so a fresh clone draws a campaign's progress)
 comma := ,
-made = $(if $(PARTIAL),$(wildcard $(1)),$(1))
+made = $(if $(PARTIAL),$(foreach r,$(1),$(if $(or $(wildcard $(r)),$(and $(filter $(RUNDIR)/%,$(r)),$(wildcard $(ARCHIVE)/$(notdir $(r))))),$(r))),$(1))
 FIGDIR := $(TOP)/figures
 SCENES := $(TOP)/sim/scenes
 SHELL := /bin/bash

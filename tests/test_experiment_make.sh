@@ -39,6 +39,28 @@ mk
 check "a results.tsv removed is made again" grep -qsx 'quick 2' "$ex/out/quick/results.tsv"
 mk PARTIAL=1 PROFILE=full
 check "PARTIAL=1 draws its own figure" test -f "$tmp/fig/ex-partial.png"
+# PARTIAL=1 draws the runs made here and those filed in the archive (restored from it), and
+# does not start the others
+ex2=$tmp/ex2
+mkdir -p "$ex2/out/full/runs" "$tmp/archive"
+echo "runs = 1 2 3" > "$ex2/full.conf"
+cat > "$ex2/Makefile" <<MK
+include $top/experiments/common.mk
+RUNS := \$(call made,\$(foreach r,\$(call conf,runs),\$(RUNDIR)/r\$(r).h5))
+\$(RUNDIR)/r%.h5: | \$(RUNDIR)
+	cp \$(ARCHIVE)/r\$*.h5 \$@ 2> /dev/null || echo run \$* > \$@
+\$(OUT)/results.tsv: \$(RUNS) | \$(OUT)
+	echo \$(notdir \$^) > \$@
+\$(FIGURE): \$(OUT)/results.tsv | \$(FIGDIR)
+	cp \$< \$@
+MK
+echo made here > "$ex2/out/full/runs/r1.h5"
+echo filed > "$tmp/archive/r2.h5"
+make -s -C "$ex2" FIGDIR="$tmp/fig" PROFILE=full PARTIAL=1 ARCHIVE="$tmp/archive" > "$tmp/make.out" 2>&1
+check "PARTIAL=1: the runs made here and the runs filed in the archive, no other" \
+  grep -qx 'r1.h5 r2.h5' "$ex2/out/full-partial/results.tsv"
+check "PARTIAL=1: a filed run is restored from the archive" grep -qx filed "$ex2/out/full/runs/r2.h5"
+check "PARTIAL=1: a run neither made nor filed is not started" test ! -e "$ex2/out/full/runs/r3.h5"
 # every experiment, both profiles: the dry run succeeds, and make's database after it lists
 # no intermediate file (the tools under test stand in for bin/, a stamp for the fingerprint)
 bin=${WG_BIN:-$top/bin}
