@@ -7,6 +7,10 @@ color(l) = l eq "s" ? 0x909090 : l eq "f" ? 0x3070d0 : l eq "g" ? 0xf0a030 : \
            l eq "fgc" ? 0xffffff : l eq "sfc" ? 0xd0d0ff : l eq "sgc" ? 0xffe0c0 : 0xff0000
 fit_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc\" { print $2 }' %s", res)))
 hi_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc_hi_gamma\" { v = $2 } END { print v + 0 }' %s", res)))
+# the bulge of the fgc-g line (keys fgc_g_bulge_*, where the experiment reports it)
+bulge_x = real(system(sprintf("awk '$1 == \"fgc_g_bulge_estar\" { v = $2 } END { print v + 0 }' %s", res)))
+bulge_y = real(system(sprintf("awk '$1 == \"fgc_g_bulge_gamma\" { v = $2 } END { print v + 0 }' %s", res)))
+bulge_a = real(system(sprintf("awk '$1 == \"fgc_g_bulge_a_over_scrit\" { v = $2 } END { print v + 0 }' %s", res)))
 # the line against the time one watches (keys vertical_f_fgc_hi_gamma_t<T>), drawn as an inset
 waits = system(sprintf("awk -F'\t' '$1 ~ /^vertical_f_fgc_hi_gamma_t[0-9]+$/ && $2 != \"nan\" { t = $1; sub(/.*_t/, \"\", t); printf \"%%s %%s %%s\\n\", t, $2, ($3 == \"nan\" ? 0 : $3) }' %s", res))
 stats op using 3 every ::1 nooutput
@@ -32,6 +36,10 @@ do for [k = 1:2] {
   if (hi_x > 0) {
     set arrow 2 from hi_x, graph 1.09 to hi_x, graph 1.0 head filled lw 2 lc rgb "#3070d0"
     set label 2 sprintf(" {/Symbol G} {/Symbol \263} 8: %.3g", hi_x) at hi_x, graph 1.06 left tc rgb "#3070d0"
+  }
+  if (bulge_x > 0) {
+    set style textbox opaque noborder
+    set label 3 sprintf("bulge: A = %.2f s_{crit}", bulge_a) at bulge_x, bulge_y left point pt 3 ps 3 lw 2 lc rgb "black" offset 1.5, 1.3 boxed front
   }
   set samples 200
   if (strlen(waits) > 0) { set multiplot; set origin 0, 0; set size 0.75, 1 }

@@ -32,14 +32,17 @@ $(OUT)/boundary.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary
 # low-Gamma rows' line (near E* = 0.7, below the bulge); the thesis's vertical line is where
 # gravity no longer matters, so it is fitted again over the rows Gamma >= vertical_gamma_min
 # (conf; default 8): key vertical_f_fgc_hi_gamma.
+# Where the including Makefile sets FGC_G_BULGE, also the bulge of the fgc-g line at A = s_crit
+# (Figs. 3.4a/b): keys fgc_g_bulge_estar, _gamma and _a_over_scrit (fgc_g_bulge.awk).
 VGMIN := $(or $(call conf,vertical_gamma_min),8)
 WAITS := $(call conf,fluid_waits)
-$(OUT)/results.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary $(if $(WAITS),$(OUT)/lifetimes.tsv ../fluid_line_after.awk)
+$(OUT)/results.tsv: $(OUT)/orderparam.tsv $(BIN)/wetgran-boundary $(if $(WAITS),$(OUT)/lifetimes.tsv ../fluid_line_after.awk) $(if $(FGC_G_BULGE),../fgc_g_bulge.awk)
 	{ $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical "f<fgc" $< && \
 	  awk -F'\t' -v g=$(VGMIN) '/^#/ || $$1 == "file" || $$2 >= g' $< | \
 	    $(BIN)/wetgran-boundary --x estar --y gamma --label label --logx --fit-vertical "f<fgc" - | \
 	    awk -F'\t' -v OFS='\t' 'NR > 1 { sub(/^vertical_f_fgc/, "vertical_f_fgc_hi_gamma", $$1); print }'; \
-	  $(if $(WAITS),awk -f ../fluid_line_after.awk -v waits="$(WAITS)" -v prefix=vertical_f_fgc_hi_gamma $(OUT)/lifetimes.tsv;) } > $@.tmp && mv $@.tmp $@
+	  $(if $(WAITS),awk -f ../fluid_line_after.awk -v waits="$(WAITS)" -v prefix=vertical_f_fgc_hi_gamma $(OUT)/lifetimes.tsv;) \
+	  $(if $(FGC_G_BULGE),awk -f ../fgc_g_bulge.awk -v ecb=$(ECB) -v scrit=$(SCRIT) $<;) } > $@.tmp && mv $@.tmp $@
 
 # The f-fgc line against the time one watches (conf fluid_waits = T1 T2 ...): near the line the
 # fluid is metastable, and coexistence nucleates after a lifetime that grows steeply as E*
