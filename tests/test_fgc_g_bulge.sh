@@ -3,7 +3,7 @@
 # the midpoint between the last fgc that a g follows and that g; the bulge is the interior
 # local maximum of that line along Gamma (a plateau counts once, at its geometric-mean Gamma),
 # with A / s_crit = 2 E* E_cb / (Gamma s_crit); a maximum at the first or last row is not a
-# bulge; and, on the filed fig3_4a full runs, the bulge the README quotes.
+# bulge; and, on the filed fig3_4a and fig3_4b full runs, the bulges the README quotes.
 set -u
 . "$(dirname "$0")/checks.sh"
 exp=$(cd "$(dirname "$0")/../experiments" && pwd)
@@ -50,5 +50,12 @@ if [ -n "${WG_BIN:-}" ]; then
   awk -f "$exp/fgc_g_bulge.awk" -v ecb=0.2844 -v scrit=0.0711 "$tmp/op4a.tsv" > "$tmp/b4a.out"
   check "fig3_4a full: the bulge at Gamma = 15, E* = sqrt(1.5 x 1.6), A / s_crit = 0.826 ($(val fgc_g_bulge_gamma "$tmp/b4a.out"), $(val fgc_g_bulge_estar "$tmp/b4a.out"), $(val fgc_g_bulge_a_over_scrit "$tmp/b4a.out"))" \
     bash -c "[ '$(val fgc_g_bulge_gamma "$tmp/b4a.out")' = 15 ] && $(declare -f near); near $(val fgc_g_bulge_estar "$tmp/b4a.out") $(awk 'BEGIN { print sqrt(2.4) }') && near $(val fgc_g_bulge_a_over_scrit "$tmp/b4a.out") 0.826236"
+  # fig3_4b's filed runs (E_cb four times larger, 133 of its 140 runs; the rest lie away from
+  # the fgc-g line): the bulge moves to Gamma = 70 and stays near A = s_crit (0.78 against 0.83)
+  filed=$(cd "$(dirname "$0")/../data/runs/fig3_4b/full" && pwd)
+  "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 2> /dev/null > "$tmp/op4b.tsv"
+  awk -f "$exp/fgc_g_bulge.awk" -v ecb=1.1376 -v scrit=0.0711 "$tmp/op4b.tsv" > "$tmp/b4b.out"
+  check "fig3_4b full: the bulge moves with E_cb to Gamma = 70, E* = sqrt(1.6 x 1.8), at A / s_crit = 0.776 ($(val fgc_g_bulge_gamma "$tmp/b4b.out"), $(val fgc_g_bulge_estar "$tmp/b4b.out"), $(val fgc_g_bulge_a_over_scrit "$tmp/b4b.out"))" \
+    bash -c "[ '$(val fgc_g_bulge_gamma "$tmp/b4b.out")' = 70 ] && $(declare -f near); near $(val fgc_g_bulge_estar "$tmp/b4b.out") $(awk 'BEGIN { print sqrt(2.88) }') && near $(val fgc_g_bulge_a_over_scrit "$tmp/b4b.out") 0.775797"
 fi
 summary
