@@ -50,7 +50,7 @@ if [ -n "${WG_BIN:-}" ]; then
   awk -f "$exp/fgc_g_bulge.awk" -v ecb=0.2844 -v scrit=0.0711 "$tmp/op4a.tsv" > "$tmp/b4a.out"
   check "fig3_4a full: the bulge at Gamma = 15, E* = sqrt(1.5 x 1.6), A / s_crit = 0.826 ($(val fgc_g_bulge_gamma "$tmp/b4a.out"), $(val fgc_g_bulge_estar "$tmp/b4a.out"), $(val fgc_g_bulge_a_over_scrit "$tmp/b4a.out"))" \
     bash -c "[ '$(val fgc_g_bulge_gamma "$tmp/b4a.out")' = 15 ] && $(declare -f near); near $(val fgc_g_bulge_estar "$tmp/b4a.out") $(awk 'BEGIN { print sqrt(2.4) }') && near $(val fgc_g_bulge_a_over_scrit "$tmp/b4a.out") 0.826236"
-  # fig3_4b's filed runs (E_cb four times larger, 133 of its 140 runs; the rest lie away from
+  # fig3_4b's filed runs (E_cb four times larger, all 140 of its runs; the last 5 lie away from
   # the fgc-g line): the bulge moves to Gamma = 70 and stays near A = s_crit (0.78 against 0.83)
   filed=$(cd "$(dirname "$0")/../data/runs/fig3_4b/full" && pwd)
   "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 2> /dev/null > "$tmp/op4b.tsv"
