@@ -48,6 +48,7 @@ typedef struct row {
   double rel_contrast; /* Delta n_area over the largest packing fraction of the profile */
   int has_profiles;
   double t_fg;   /* the fluid-gas cut of this run's scan (--per-scan), NAN: the global one */
+  double tg_chain; /* the median T_g / E_cb of its chain (--per-scan, scan_chains), NAN: none */
   char label[4];
 } row;
 
@@ -212,7 +213,7 @@ static double contrast(const row *r, const thresholds *th)
 static int measure(const char *path, row *r)
 {
   memset(r, 0, sizeof *r);
-  r->t_fg = NAN;
+  r->t_fg = r->tg_chain = NAN;
   r->file = path;
   hid_t f = wg_h5_open_read(path);
   if (f < 0) return WG_EIO;
@@ -298,6 +299,10 @@ static void label(row *r, const thresholds *th)
       snprintf(r->label, sizeof r->label, "%s%sc", a, b);
       return;
     }
+  }
+  if (isfinite(r->tg_chain) && !(r->tg < th->t_sf)) { /* scan_chains */
+    snprintf(r->label, sizeof r->label, "%s", region(r->tg_chain, t_fg, th));
+    return;
   }
   snprintf(r->label, sizeof r->label, "%s", region(r->tg, t_fg, th));
 }
@@ -587,6 +592,64 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th, int re
   free(jump);
 }
 
+/* A phase changes along a scan only where T_g jumps (Fig. 3.28b).  The homogeneous runs of a
+   scan that follow each other in E* with no coexisting or solid run between them and with
+   T_g changing by at most JUMP_COEX_DECADES from one to the next form a chain: one phase, its
+   label decided by the chain's median log T_g.  A scan without a cut of its own takes its
+   neighbour's, and that cut can fall inside a chain whose T_g drifts with E*: at Gamma = 5 of
+   the full fig3_4b sweep the gases right of the coexistence cool steadily from 12.5 E_cb at
+   E* = 1.3 to 7.4 at E* = 5 (no step above 0.1 decades), and the cut 8.9 of Gamma = 3 called
+   the last of them fluid. */
+static int by_estar(const void *a, const void *b, void *rows_)
+{
+  const row *rows = rows_;
+  double x = rows[*(const size_t *)a].estar, y = rows[*(const size_t *)b].estar;
+  return (x > y) - (x < y);
+}
+
+static void scan_chains(row *rows, size_t n, const thresholds *th)
+{
+  size_t *idx = malloc(sizeof *idx * (n ? n : 1));
+  double *lt = malloc(sizeof *lt * (n ? n : 1));
+  if (!idx || !lt) {
+    free(idx);
+    free(lt);
+    return;
+  }
+  for (size_t i = 0; i < n; i++) {
+    size_t first = 0;
+    while (!same_scan(&rows[first], &rows[i])) first++;
+    if (first < i) continue;
+    size_t m = 0;
+    for (size_t j = i; j < n; j++)
+      if (same_scan(&rows[j], &rows[i])) idx[m++] = j;
+    qsort_r(idx, m, sizeof *idx, by_estar, rows);
+    for (size_t a = 0; a < m;) {
+      const row *r = &rows[idx[a]];
+      if ((r->has_profiles && contrast(r, th) > th->dn) || !(r->tg > th->t_sf)) {
+        a++;
+        continue;
+      }
+      size_t b = a + 1;
+      while (b < m) {
+        const row *q = &rows[idx[b]];
+        if ((q->has_profiles && contrast(q, th) > th->dn) || !(q->tg > th->t_sf) ||
+            fabs(log10(q->tg) - log10(rows[idx[b - 1]].tg)) > JUMP_COEX_DECADES)
+          break;
+        b++;
+      }
+      for (size_t k = a; k < b; k++) lt[k - a] = log10(rows[idx[k]].tg);
+      qsort(lt, b - a, sizeof *lt, cmp_double);
+      size_t h = (b - a) / 2;
+      double med = (b - a) % 2 ? lt[h] : 0.5 * (lt[h - 1] + lt[h]);
+      for (size_t k = a; k < b; k++) rows[idx[k]].tg_chain = pow(10, med);
+      a = b;
+    }
+  }
+  free(idx);
+  free(lt);
+}
+
 /* With --per-scan the colder class is the homogeneous runs below their own scan's t_fg, not
    below the global cut: the global cut moves with the hottest gases of a sweep (18.5 E_cb over
    118 runs of the full fig3_4a sweep, 29.6 over 125), and a cut that leaves the cool gases of
@@ -783,7 +846,10 @@ static void usage(FILE *out)
           "                             log Gamma, else the global cut.  For sweeps over Gamma,\n"
           "                             where the gas's T_g/E_cb moves by decades.  The solid cut t_sf is\n"
           "                             then redone on the homogeneous runs below their own\n"
-          "                             scan's t_fg\n"
+          "                             scan's t_fg.  The homogeneous runs of a scan that follow\n"
+          "                             each other in E* without coexistence between them and\n"
+          "                             with T_g changing by at most %g decades per step are one\n"
+          "                             phase (a chain): labelled by its median T_g\n"
           "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
           "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
@@ -792,7 +858,8 @@ static void usage(FILE *out)
           "  --along estar|gamma        the scan variable of --inflection (default estar; gamma:\n"
           "                             the s-f line of Fig. 3.11, a scan in Gamma at fixed E*)\n",
           100 * WARMUP_IN_WINDOW, DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
-          default_thresholds.t_fg, default_thresholds.dn, DEFAULT_RELATIVE_DN, JUMP_COEX_DECADES, JUMP_DECADES);
+          default_thresholds.t_fg, default_thresholds.dn, DEFAULT_RELATIVE_DN, JUMP_COEX_DECADES, JUMP_DECADES,
+          JUMP_COEX_DECADES);
 }
 
 static int parse_double(const char *opt, const char *s, double *v)
@@ -873,6 +940,7 @@ int main(int argc, char **argv)
           calibrate_solid_per_scan(rows, nf, &th, t_sf_none);
         }
         calibrate_per_scan(rows, nf, &th, 1);
+        scan_chains(rows, nf, &th);
       }
       printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\tcontrast\t%s\n", nf, th.t_sf,
              th.t_fg, th.dn, th.relative ? "relative" : "absolute");

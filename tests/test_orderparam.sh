@@ -157,6 +157,24 @@ check "filed fig3_9 runs: the gases at Gamma = 8, E* = 4.5 (coexisting by contra
   test "$labels" = "g g g g"
 check "filed fig3_9 runs: Gamma = 1.2 is solid at E* = 0.3 and 6 and in fluid-gas coexistence at 1.8 ($(lab 1.2 0.3) $(lab 1.2 6) $(lab 1.2 1.8))" \
   test "$(lab 1.2 0.3) $(lab 1.2 6) $(lab 1.2 1.8)" = "s s fgc"
+# --per-scan chains: at Gamma = 5 of the filed fig3_4b runs (F_B = 16 mg) the gases right of
+# the coexistence cool steadily as E* grows, from 12.5 E_cb at E* = 1.3 to 7.4 at E* = 5 (steps
+# of at most 0.1 decades).  The row has no jump of its own (0.38 decades), takes the cut of
+# Gamma = 3 (8.9), and that cut falls inside the chain: E* = 5 alone would be fluid.  A phase
+# changes only where T_g jumps, so the chain is one phase, labelled by its median (10.4): gas.
+# At Gamma = 3 the homogeneous runs at E* = 1-5 (4.9-2.9 E_cb) lie below the row's own cut.
+filed=$(cd "$(dirname "$0")/../data/runs/fig3_4b/full" && pwd)
+"$bin/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 > "$tmp/f34b.tsv" 2> "$tmp/f34b.err"
+labb() { awk -F'\t' -v g="$1" -v e="$2" '$2 == g && $3 == e { print $NF }' "$tmp/f34b.tsv"; }
+cut3=$(sed -n 's/.*scan Gamma = 3,.*t_fg = \([^ ]*\) (its own jump;.*/\1/p' "$tmp/f34b.err")
+check "filed fig3_4b runs: the Gamma = 5 row takes the cut of Gamma = 3 ($cut3), above the T_g of its gas at E* = 5 ($(awk -F'\t' '$2 == 5 && $3 == 5 { print $11 }' "$tmp/f34b.tsv"))" \
+  bash -c "grep -q 'scan Gamma = 5,.*t_fg = $cut3 (nearest scan' '$tmp/f34b.err' && awk -F'\t' -v c='$cut3' '\$2 == 5 && \$3 == 5 { exit !(\$11 < c) }' '$tmp/f34b.tsv'"
+labels=$(for e in 1 1.3 1.7 2.2 3 5; do printf '%s ' "$(labb 5 $e)"; done)
+check "filed fig3_4b runs: Gamma = 5 is coexisting at E* = 1 and gas at 1.3-5 ($labels)" \
+  test "$labels" = "fgc g g g g g "
+labels=$(for e in 0.8 1 1.7 5; do printf '%s ' "$(labb 3 $e)"; done)
+check "filed fig3_4b runs: Gamma = 3 is coexisting at E* = 0.8 and fluid at 1-5 ($labels)" \
+  test "$labels" = "fgc f f f "
 # --per-scan: at Gamma = 80 the gas is hotter than at 15 (T_g/E_cb ~ 1400 and 2400 against
 # ~1300), so one Otsu cut over the sweep would fall between the gases; each scan's own jump
 # (Gamma = 15: fluid ~ 1, gas ~ 1300) must label every gas g, and the Gamma = 80 scan, which
