@@ -755,6 +755,7 @@ static int write_h5(const char *path, const row *rows, size_t n, const threshold
       {"dn_area", "1", "max - min of the packing fraction", offsetof(row, dn_area)},
       {"rel_contrast", "1", "dn_area over the largest packing fraction of the profile", offsetof(row, rel_contrast)},
       {"t_fg", "E_cb", "fluid-gas cut of the run's scan (--per-scan; NaN: the global one)", offsetof(row, t_fg)},
+      {"tg_chain", "E_cb", "median tg of the run's chain, which decides fluid or gas (--per-scan; NaN: none)", offsetof(row, tg_chain)},
       {"t_settle", "sqrt(d/g)", "end of T_g's warm-up (MSER-5; NaN: not settled within the run's first half)", offsetof(row, t_settle)},
   };
   hsize_t dims[1] = {n};

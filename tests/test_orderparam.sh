@@ -164,7 +164,8 @@ check "filed fig3_9 runs: Gamma = 1.2 is solid at E* = 0.3 and 6 and in fluid-ga
 # changes only where T_g jumps, so the chain is one phase, labelled by its median (10.4): gas.
 # At Gamma = 3 the homogeneous runs at E* = 1-5 (4.9-2.9 E_cb) lie below the row's own cut.
 filed=$(cd "$(dirname "$0")/../data/runs/fig3_4b/full" && pwd)
-"$bin/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 > "$tmp/f34b.tsv" 2> "$tmp/f34b.err"
+"$bin/wetgran-orderparam" --calibrate --per-scan --relative-contrast --h5 "$tmp/f34b.h5" "$filed"/G*.h5 \
+  > "$tmp/f34b.tsv" 2> "$tmp/f34b.err"
 labb() { awk -F'\t' -v g="$1" -v e="$2" '$2 == g && $3 == e { print $NF }' "$tmp/f34b.tsv"; }
 cut3=$(sed -n 's/.*scan Gamma = 3,.*t_fg = \([^ ]*\) (its own jump;.*/\1/p' "$tmp/f34b.err")
 check "filed fig3_4b runs: the Gamma = 5 row takes the cut of Gamma = 3 ($cut3), above the T_g of its gas at E* = 5 ($(awk -F'\t' '$2 == 5 && $3 == 5 { print $11 }' "$tmp/f34b.tsv"))" \
@@ -175,6 +176,12 @@ check "filed fig3_4b runs: Gamma = 5 is coexisting at E* = 1 and gas at 1.3-5 ($
 labels=$(for e in 0.8 1 1.7 5; do printf '%s ' "$(labb 3 $e)"; done)
 check "filed fig3_4b runs: Gamma = 3 is coexisting at E* = 0.8 and fluid at 1-5 ($labels)" \
   test "$labels" = "fgc f f f "
+# --h5 holds each run's chain median: at Gamma = 5 the median of the five gases' T_g (E* = 2.2)
+h5dump -d /orderparam/tg_chain -y -o "$tmp/chain.txt" "$tmp/f34b.h5" > /dev/null 2>&1
+chain=$(tr -s ', \n' '\n\n\n' < "$tmp/chain.txt" | grep -v '^$' | paste - <(awk -F'\t' '!/^#/ && $1 != "file" { print $2, $3, $11 }' "$tmp/f34b.tsv"))
+check "--h5: /orderparam/tg_chain of Gamma = 5, E* = 1.3-5 is the T_g of E* = 2.2 ($(echo "$chain" | awk '$2 == 5 && $3 >= 1.3 { printf "%.4g ", $1 }'))" \
+  bash -c "echo '$chain' | awk '\$2 == 5 && \$3 == 2.2 { m = \$4 } \$2 == 5 && \$3 >= 1.3 { v[++n] = \$1 }
+    END { for (i = 1; i <= n; i++) if (v[i] != v[1] || (v[i] - m) / m > 1e-5 || (m - v[i]) / m > 1e-5) exit 1; exit n != 5 }'"
 # --per-scan: at Gamma = 80 the gas is hotter than at 15 (T_g/E_cb ~ 1400 and 2400 against
 # ~1300), so one Otsu cut over the sweep would fall between the gases; each scan's own jump
 # (Gamma = 15: fluid ~ 1, gas ~ 1300) must label every gas g, and the Gamma = 80 scan, which
