@@ -176,6 +176,13 @@ check "filed fig3_4b runs: Gamma = 5 is coexisting at E* = 1 and gas at 1.3-5 ($
 labels=$(for e in 0.8 1 1.7 5; do printf '%s ' "$(labb 3 $e)"; done)
 check "filed fig3_4b runs: Gamma = 3 is coexisting at E* = 0.8 and fluid at 1-5 ($labels)" \
   test "$labels" = "fgc f f f "
+# An order parameter the labels do not use agrees: bridges per particle (2 n_cb / n from the
+# profiles) at Gamma = 5 are 2.3-3.1 for the fluids (E* <= 0.45), 0.24-0.30 for the gases
+# at E* = 1.3-3, and 0.38 at E* = 5: a gas, by a factor 5 from the fluids.
+bpp() { "$bin/wetgran-profiles" "$filed/G5_E$1.h5" | awk -F'\t' 'NR > 1 { n += $2; b += $6 } END { print 2 * b / n }'; }
+b5=$(bpp 5); bf=$(bpp 0.45); bg=$(bpp 3)
+check "filed fig3_4b runs: Gamma = 5, E* = 5 has $b5 bridges per particle, nearer in log to the gas at E* = 3 ($bg) than to the fluid at 0.45 ($bf)" \
+  awk -v x="$b5" -v f="$bf" -v g="$bg" 'BEGIN { exit !(log(x / g) ^ 2 < log(f / x) ^ 2 && g < f) }'
 # --h5 holds each run's chain median: at Gamma = 5 the median of the five gases' T_g (E* = 2.2)
 h5dump -d /orderparam/tg_chain -y -o "$tmp/chain.txt" "$tmp/f34b.h5" > /dev/null 2>&1
 chain=$(tr -s ', \n' '\n\n\n' < "$tmp/chain.txt" | grep -v '^$' | paste - <(awk -F'\t' '!/^#/ && $1 != "file" { print $2, $3, $11 }' "$tmp/f34b.tsv"))
