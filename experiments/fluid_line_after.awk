@@ -2,12 +2,20 @@
 # lifetime table (fluid_lifetime.awk), the geometric midpoint between the largest E* still
 # fluid at t_w (tau > t_w) and the next one, the smallest whose coexistence has nucleated by
 # t_w; rows that coexist from their smallest E* or have not nucleated by t_w give none.
+# The same on a table of fluid_lifetime.awk -v lower=fgc -v upper=g: the fgc-g line, between
+# the largest E* still coexisting at t_w and the next.
 # -v waits="T1 T2 ..."  -v prefix=KEY: rows KEY_t<T> (mean over rows, its standard error) and
 # KEY_t<T>_n (rows averaged), as in results.tsv.  -v table=1 instead: one line per wait and
 # row, "wait row estar estar_err" (the error half the E* step, as wetgran-transitions), rows
 # in increasing order.
+# A run shows the lower phase at t_w if it had formed by then (column 6 of the table, when
+# given) and not yet given way (tau).
 /^#/ || $1 == "gamma" { next }
-{ r = ++m[$1]; e[$1, r] = $2; tau[$1, r] = ($4 == "inf") ? -1 : $4 + 0; rows[$1] = 1 }
+{
+  r = ++m[$1]; e[$1, r] = $2; tau[$1, r] = ($4 == "inf") ? -1 : $4 + 0; rows[$1] = 1
+  fm[$1, r] = ($6 == "") ? 0 : ($6 == "nan") ? -1 : $6 + 0
+}
+function gone(g, i, w) { return (tau[g, i] >= 0 && tau[g, i] <= w) || fm[g, i] < 0 || fm[g, i] > w }
 END {
   nw = split(waits, w, " ")
   for (g in rows)   # sort each row by E*
@@ -15,6 +23,7 @@ END {
       for (j = i; j > 1 && e[g, j - 1] + 0 > e[g, j] + 0; j--) {
         x = e[g, j]; e[g, j] = e[g, j - 1]; e[g, j - 1] = x
         x = tau[g, j]; tau[g, j] = tau[g, j - 1]; tau[g, j - 1] = x
+        x = fm[g, j]; fm[g, j] = fm[g, j - 1]; fm[g, j - 1] = x
       }
   if (table) {
     nr = 0
@@ -26,7 +35,7 @@ END {
       for (r = 1; r <= nr; r++) {
         g = rl[r]
         for (i = 1; i <= m[g]; i++)
-          if (tau[g, i] >= 0 && tau[g, i] <= w[a] + 0) {
+          if (gone(g, i, w[a] + 0)) {
             if (i > 1) printf "%s\t%s\t%.6g\t%.3g\n", w[a], g, sqrt(e[g, i - 1] * e[g, i]), (e[g, i] - e[g, i - 1]) / 2
             break
           }
@@ -37,7 +46,7 @@ END {
     s = 0; s2 = 0; c = 0
     for (g in rows)
       for (i = 1; i <= m[g]; i++)
-        if (tau[g, i] >= 0 && tau[g, i] <= w[a] + 0) {
+        if (gone(g, i, w[a] + 0)) {
           if (i > 1) { x = sqrt(e[g, i - 1] * e[g, i]); s += x; s2 += x * x; c++ }
           break
         }

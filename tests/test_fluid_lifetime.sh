@@ -42,6 +42,30 @@ check "table: header, then after 20 only row 10, after 300 rows 10 and 20 in ord
   test "$(cut -f1,2 "$tmp/rows.tsv" | tr '\t\n' ': ')" = "wait:row 20:10 300:10 300:20 "
 check "table: after 300, row 20 at sqrt(0.9 x 1.0), error half the step (0.05)" \
   bash -c "$(declare -f near); near $(awk -F'\t' '$1 == 300 && $2 == 20 { print $3 }' "$tmp/rows.tsv") $(awk 'BEGIN { print sqrt(0.9) }') && [ $(awk -F'\t' '$1 == 300 && $2 == 20 { print $4 }' "$tmp/rows.tsv") = 0.05 ]"
+# The fgc-g line from the bridge count (-v lower=fgc -v upper=g -v falling=1): a coexistence has
+# many bridges (500), a gas few (70).  Row 30: u coexists only from t = 600 (formed 600), p from
+# t = 10 on, q from 10 until it evaporates at 800 (tau 800), r is a gas throughout (tau 0).
+bseries() {  # run estar label from until(-1: never ends)
+  for t in $(seq 0 10 1000); do
+    if [ "$t" -ge "$4" ] && { [ "$5" -lt 0 ] || [ "$t" -lt "$5" ]; }; then B=500; else B=70; fi
+    echo "$1 30 $2 $3 $t $B"
+  done
+}
+{ bseries u 0.9 fgc 600 -1; bseries p 1.0 fgc 10 -1; bseries q 1.1 g 10 800; bseries r 1.2 g 2000 -1; } > "$tmp/bs.txt"
+awk -v lower=fgc -v upper=g -v falling=1 -v late=0.1 -f "$exp/fluid_lifetime.awk" "$tmp/bs.txt" > "$tmp/blt.tsv"
+near_rel() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a - b < 1e-3 * b && b - a < 1e-3 * b) }'; }
+bcol() { awk -F'\t' -v e=$1 -v c=$2 '$2 == e { print $c }' "$tmp/blt.tsv"; }
+check "falling: coexistence from 600 (formed $(bcol 0.9 6), tau $(bcol 0.9 4)), evaporating at 800 (tau $(bcol 1.1 4)), a gas throughout (tau $(bcol 1.2 4))" \
+  test "$(bcol 0.9 6) $(bcol 0.9 4) $(bcol 1.0 6) $(bcol 1.1 4) $(bcol 1.2 4)" = "600 inf 10 800 0"
+check "late=0.1: the level between the phases' last tenths, sqrt(500 x 70) ($(bcol 1.0 5))" \
+  near_rel "$(bcol 1.0 5)" "$(awk 'BEGIN { print sqrt(35000) }')"
+awk -v lower=fgc -v upper=g -v falling=1 -f "$exp/fluid_lifetime.awk" "$tmp/bs.txt" > "$tmp/blt2.tsv"
+# (the second half is t = 500-1000, 51 samples: u coexists in 41 of them, q in 30)
+check "late=0.5 (default): the second halves, partly of the other phase, put the level at sqrt(416 x 323) ($(awk -F'\t' 'NR == 2 { print $5 }' "$tmp/blt2.tsv"))" \
+  near_rel "$(awk -F'\t' 'NR == 2 { print $5 }' "$tmp/blt2.tsv")" "$(awk 'BEGIN { print sqrt((10 * 70 + 41 * 500) / 51 * (30 * 500 + 21 * 70) / 51) }')"
+awk -f "$exp/fluid_line_after.awk" -v table=1 -v waits="300 700 900" "$tmp/blt.tsv" > "$tmp/brows.tsv"
+check "after 300 no line (u not yet formed), after 700 sqrt(1.1 x 1.2) (q coexists until 800), after 900 sqrt(1.0 x 1.1)" \
+  test "$(tail -n +2 "$tmp/brows.tsv" | cut -f1,3 | tr '\t\n' ': ')" = "700:$(awk 'BEGIN { printf "%.6g", sqrt(1.1 * 1.2) }') 900:$(awk 'BEGIN { printf "%.6g", sqrt(1.1) }') "
 # On the 129 filed runs of the full fig3_4a sweep (elastic, 20 000 t.u., data/runs), labelled
 # as experiments/phase_diagram.mk labels them: the late nucleation at E* = 0.9 (Gamma = 15, 50)
 # and the fluid that lasts (Gamma = 8, 30), and the line after 300 t.u. (every row between 1
@@ -87,5 +111,27 @@ if [ -n "${WG_BIN:-}" ]; then
   check "fig3_5 full, after 20 000 t.u.: every row's line is wetgran-transitions' f-fgc cut ($(cut -f3 "$tmp/tr5.tsv" | tail -n +2 | tr '\n' ' '))" \
     bash -c "[ \$(tail -n +2 '$tmp/tr5.tsv' | wc -l) = 4 ] && tail -n +2 '$tmp/tr5.tsv' | while IFS=\$'\t' read -r g pair e err; do \
       awk -v a=\$e -v b=\$(awk -F'\t' -v r=\$g '\$1 == 20000 && \$2 == r { print \$3 }' '$tmp/rows5.tsv') 'BEGIN { exit !(b != \"\" && a - b < 1e-4 && b - a < 1e-4) }' || exit 1; done"
+  # The fgc-g line from the bridge count, on the filed rows F_B = 2 and 16 m g of fig3_5 full:
+  # at F_B = 2, E* = 1.4 coexists from t = 300 and evaporates at about 1200; at F_B = 16, E* = 1
+  # coexists until about 16 400 of its 20 000 t.u., and E* = 1.2, the row's largest, until about
+  # 400, so after 300 t.u. that row has no line.  After the whole run every row's line is
+  # wetgran-transitions' fgc-g cut.
+  "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/F2_E*.h5 "$filed"/F16_E*.h5 \
+    2> /dev/null > "$tmp/op5g.tsv"
+  awk -F'\t' '$1 !~ /^#/ && $1 != "file" && ($NF == "fgc" || $NF == "g") { print $1, $5, $3, $NF }' "$tmp/op5g.tsv" |
+    while read -r run ecb e l; do
+      "$WG_BIN/wetgran-series" "$run" bridges | awk -v r="$run" -v g=$ecb -v e=$e -v l=$l 'NR > 1 { print r, g, e, l, $1, $2 }'
+    done | awk -v lower=fgc -v upper=g -v falling=1 -v late=0.1 -f "$exp/fluid_lifetime.awk" > "$tmp/ltg.tsv"
+  tg5() { awk -F'\t' -v g=$1 -v e=$2 -v c=$3 '$1 == g && $2 == e { print $c }' "$tmp/ltg.tsv"; }
+  check "fig3_5 full, bridges: F_B = 2 mg, E* = 1.4 coexists from $(tg5 0.1422 1.4 6) to $(tg5 0.1422 1.4 4); 16 mg, E* = 1 until $(tg5 1.1376 1 4), 1.2 until $(tg5 1.1376 1.2 4)" \
+    awk -v f="$(tg5 0.1422 1.4 6)" -v a="$(tg5 0.1422 1.4 4)" -v b="$(tg5 1.1376 1 4)" -v c="$(tg5 1.1376 1.2 4)" \
+      'BEGIN { exit !(f >= 200 && f <= 400 && a >= 1000 && a <= 1400 && b >= 15000 && b <= 18000 && c > 300 && c <= 500) }'
+  awk -f "$exp/fluid_line_after.awk" -v table=1 -v waits="300 20000" "$tmp/ltg.tsv" > "$tmp/rowsg.tsv"
+  "$WG_BIN/wetgran-transitions" --x estar --group e_cb --pair fgc:g --logx "$tmp/op5g.tsv" 2> /dev/null > "$tmp/trg.tsv"
+  check "fig3_5 full, bridges: after 300 t.u. only F_B = 2 mg has a line, at sqrt(1.4 x 1.5) ($(awk -F'\t' '$1 == 300 { printf "%s:%s ", $2, $3 }' "$tmp/rowsg.tsv"))" \
+    bash -c "$(declare -f near); [ \$(awk -F'\t' '\$1 == 300' '$tmp/rowsg.tsv' | wc -l) = 1 ] && near \$(awk -F'\t' '\$1 == 300 && \$2 == 0.1422 { print \$3 }' '$tmp/rowsg.tsv') $(awk 'BEGIN { print sqrt(2.1) }')"
+  check "fig3_5 full, bridges: after 20 000 t.u. both rows' lines are wetgran-transitions' fgc-g cuts ($(cut -f3 "$tmp/trg.tsv" | tail -n +2 | tr '\n' ' '))" \
+    bash -c "[ \$(tail -n +2 '$tmp/trg.tsv' | wc -l) = 2 ] && tail -n +2 '$tmp/trg.tsv' | while IFS=\$'\t' read -r g pair e err; do \
+      awk -v a=\$e -v b=\$(awk -F'\t' -v r=\$g '\$1 == 20000 && \$2 == r { print \$3 }' '$tmp/rowsg.tsv') 'BEGIN { exit !(b != \"\" && a - b < 1e-4 && b - a < 1e-4) }' || exit 1; done"
 fi
 summary
