@@ -113,9 +113,9 @@ if [ -n "${WG_BIN:-}" ]; then
       awk -v a=\$e -v b=\$(awk -F'\t' -v r=\$g '\$1 == 20000 && \$2 == r { print \$3 }' '$tmp/rows5.tsv') 'BEGIN { exit !(b != \"\" && a - b < 1e-4 && b - a < 1e-4) }' || exit 1; done"
   # The fgc-g line from the bridge count, on the filed rows F_B = 2 and 16 m g of fig3_5 full:
   # at F_B = 2, E* = 1.4 coexists from t = 300 and evaporates at about 1200; at F_B = 16, E* = 1
-  # coexists until about 16 400 of its 20 000 t.u., and E* = 1.2, the row's largest, until about
-  # 400, so after 300 t.u. that row has no line.  After the whole run every row's line is
-  # wetgran-transitions' fgc-g cut.
+  # coexists until about 16 400 of its 20 000 t.u., E* = 1.2 until about 400 and 1.3 until about
+  # 250, so after 300 t.u. that row's line lies at sqrt(1.2 x 1.3).  After the whole run every
+  # row's line is wetgran-transitions' fgc-g cut.
   "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/F2_E*.h5 "$filed"/F16_E*.h5 \
     2> /dev/null > "$tmp/op5g.tsv"
   awk -F'\t' '$1 !~ /^#/ && $1 != "file" && ($NF == "fgc" || $NF == "g") { print $1, $5, $3, $NF }' "$tmp/op5g.tsv" |
@@ -128,8 +128,8 @@ if [ -n "${WG_BIN:-}" ]; then
       'BEGIN { exit !(f >= 200 && f <= 400 && a >= 1000 && a <= 1400 && b >= 15000 && b <= 18000 && c > 300 && c <= 500) }'
   awk -f "$exp/fluid_line_after.awk" -v table=1 -v waits="300 20000" "$tmp/ltg.tsv" > "$tmp/rowsg.tsv"
   "$WG_BIN/wetgran-transitions" --x estar --group e_cb --pair fgc:g --logx "$tmp/op5g.tsv" 2> /dev/null > "$tmp/trg.tsv"
-  check "fig3_5 full, bridges: after 300 t.u. only F_B = 2 mg has a line, at sqrt(1.4 x 1.5) ($(awk -F'\t' '$1 == 300 { printf "%s:%s ", $2, $3 }' "$tmp/rowsg.tsv"))" \
-    bash -c "$(declare -f near); [ \$(awk -F'\t' '\$1 == 300' '$tmp/rowsg.tsv' | wc -l) = 1 ] && near \$(awk -F'\t' '\$1 == 300 && \$2 == 0.1422 { print \$3 }' '$tmp/rowsg.tsv') $(awk 'BEGIN { print sqrt(2.1) }')"
+  check "fig3_5 full, bridges: after 300 t.u. F_B = 2 mg at sqrt(1.4 x 1.5), 16 mg at sqrt(1.2 x 1.3) ($(awk -F'\t' '$1 == 300 { printf "%s:%s ", $2, $3 }' "$tmp/rowsg.tsv"))" \
+    bash -c "$(declare -f near); [ \$(awk -F'\t' '\$1 == 300' '$tmp/rowsg.tsv' | wc -l) = 2 ] && near \$(awk -F'\t' '\$1 == 300 && \$2 == 0.1422 { print \$3 }' '$tmp/rowsg.tsv') $(awk 'BEGIN { print sqrt(2.1) }') && near \$(awk -F'\t' '\$1 == 300 && \$2 == 1.1376 { print \$3 }' '$tmp/rowsg.tsv') $(awk 'BEGIN { print sqrt(1.56) }')"
   check "fig3_5 full, bridges: after 20 000 t.u. both rows' lines are wetgran-transitions' fgc-g cuts ($(cut -f3 "$tmp/trg.tsv" | tail -n +2 | tr '\n' ' '))" \
     bash -c "[ \$(tail -n +2 '$tmp/trg.tsv' | wc -l) = 2 ] && tail -n +2 '$tmp/trg.tsv' | while IFS=\$'\t' read -r g pair e err; do \
       awk -v a=\$e -v b=\$(awk -F'\t' -v r=\$g '\$1 == 20000 && \$2 == r { print \$3 }' '$tmp/rowsg.tsv') 'BEGIN { exit !(b != \"\" && a - b < 1e-4 && b - a < 1e-4) }' || exit 1; done"
