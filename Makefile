@@ -49,17 +49,27 @@ all: deps
 deps:
 	@./scripts/install-deps.sh
 
-tools: $(TOOLS) $(BIN)/wetgran-run.engine
+tools: $(TOOLS)
 
-# A fingerprint of the simulator's physics (scripts/engine-fingerprint: sources without their
-# comments and layout, compiler version, flags): experiments rerun their runs when it changes,
-# not when the binary is merely relinked (a new commit changes the version string) or a comment
-# is edited.  The time-driven engine's own modules (td, contact) are left out: event-driven runs
-# do not use them.  Recomputed on every make (a fraction of a second); rewritten only if changed.
-ED_SRC := $(sort $(filter-out sim/td.% sim/contact.% sim/friction.%,$(wildcard sim/*.c sim/*.h)))
-$(BIN)/wetgran-run.engine: $(BIN)/wetgran-run FORCE
-	@./scripts/engine-fingerprint $(CC) '$(BASE_CFLAGS)' $(ED_SRC) > $@.tmp
-	@cmp -s $@.tmp $@ && rm $@.tmp || mv $@.tmp $@
+# The simulator's behavioural version (scripts/engine-version: a hash of the bit-exact outputs
+# of seven short canonical runs, about 5 s of CPU): figures' runs depend on it, so a rebuild
+# that computes the same trajectories re-simulates nothing.  Computed when the simulator is
+# rebuilt; the version file is rewritten only when the version changes.
+$(BIN)/wetgran-run.version: $(BIN)/wetgran-run.vstamp ;
+$(BIN)/wetgran-run.vstamp: $(BIN)/wetgran-run
+	@./scripts/engine-version $(BIN)/wetgran-run > $(BIN)/wetgran-run.version.tmp
+	@cmp -s $(BIN)/wetgran-run.version.tmp $(BIN)/wetgran-run.version && rm $(BIN)/wetgran-run.version.tmp || \
+	  mv $(BIN)/wetgran-run.version.tmp $(BIN)/wetgran-run.version
+	@touch $@
+
+# `make engine-version`: today's version against the committed one (sim/ENGINE_VERSION).  A change
+# that alters a canonical trajectory must commit the new version and say so in its message.
+.PHONY: engine-version
+engine-version: deps
+	$(MAKE) tools
+	@v=$$(./scripts/engine-version $(BIN)/wetgran-run) && c=$$(cat sim/ENGINE_VERSION) && \
+	  if [ "$$v" = "$$c" ]; then echo "engine version $$v (as committed in sim/ENGINE_VERSION)"; \
+	  else echo "engine version $$v, committed $$c: the engine's trajectories changed; write $$v to sim/ENGINE_VERSION and say so in the commit (records of $$c stay usable; make check-archive FIG=<id> tests them against today's engine)"; exit 1; fi
 
 $(BUILD)/sim/%.o: sim/%.c $(wildcard sim/*.h) | $(BUILD)/sim
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
@@ -113,7 +123,7 @@ FIGURES := $(notdir $(wildcard experiments/fig*))
 # figure that borrows another's runs after that one (make -j2 fig3_3 fig3_4atd would otherwise
 # start the same run twice at once)
 figure-tools: deps
-	$(MAKE) tools
+	$(MAKE) tools $(BIN)/wetgran-run.version
 $(FIGURES): %: figure-%
 
 # All figures share one pool of job slots (-j per core), so no core idles while one figure
@@ -129,9 +139,42 @@ $(addprefix figure-,$(FIGURES)): figure-%: | figure-tools
 borrowed = $(shell grep -E '^\s*(borrow|thresholds_from)\s*=' experiments/$(1)/$(PROFILE).conf 2>/dev/null | sed 's/^[^=]*=//')
 $(foreach f,$(FIGURES),$(eval figure-$(f): $(addprefix figure-,$(call borrowed,$(f)))))
 
-# Compare every figure's results.tsv with data/reference/<id>.tsv (after make figures).
+# Compare figures' results.tsv with data/reference/<id>.tsv (after make figures): every figure,
+# or those named (make check-figures FIGURES="fig3_4a fig3_9", or make check-fig3_4a).
 check-figures:
-	FIGURES_SKIP='$(FIGURES_SKIP)' ./scripts/check-figures.sh $(PROFILE)
+	FIGURES_SKIP='$(FIGURES_SKIP)' ./scripts/check-figures.sh $(PROFILE) $(filter-out all,$(FIGURES_ASKED))
+FIGURES_ASKED := $(if $(filter command line,$(origin FIGURES)),$(FIGURES))
+check-fig%:
+	FIGURES_SKIP='$(FIGURES_SKIP)' ./scripts/check-figures.sh $(PROFILE) fig$*
+
+# `make help`: the targets, and every figure with what it shows, whether CI makes it and the
+# CPU its profiles took (experiments/figures.tsv; scripts/figure-costs measures them).
+.PHONY: help
+help:
+	@sed -n '2,5p' Makefile | sed 's/^# //'
+	@echo "  make <id> [PROFILE=quick|full]   one figure; make figures: all; make check-figures [FIGURES=...]"
+	@echo "  make engine-version               the behavioural engine version against sim/ENGINE_VERSION"
+	@echo "  make check-archive FIG=<id> [SAMPLE=k SEED=s MAX_CPU=s PROFILE=full]   re-simulate archived points"
+	@echo "  make archive [FIGURES=...] [PROFILE=full]   file records into data/records (for the next clone)"
+	@echo "  make docs-figures                 redraw docs/figures from the archive"
+	@echo
+	@awk -F'\t' 'NR == 1 { next } { printf "%-10s %-3s quick %8s  full %9s  %s\n", $$1, ($$3 == "yes" ? "CI" : "-"), $$4, $$5, $$2 }' experiments/figures.tsv
+	@echo "(CPU: seconds of simulation summed over the profile's records; CI: made and checked by .ci/run)"
+
+# Re-simulate SAMPLE randomly chosen archived points of FIG and compare them with the archive
+# (scripts/check-archive; outcome in experiments/<FIG>/out/<PROFILE>/check-archive.tsv).
+SAMPLE ?= 3
+SEED ?= 1
+MAX_CPU ?= 0
+.PHONY: check-archive archive
+check-archive: figure-tools
+	@[ -n "$(FIG)" ] || { echo "make check-archive: name the figure, FIG=<id>" >&2; exit 2; }
+	./scripts/check-archive $(FIG) $(SAMPLE) $(SEED) $(MAX_CPU) $(if $(filter command line,$(origin PROFILE)),$(PROFILE),full)
+
+# File the records of the figures named (default: all) into data/records/<id>/<profile>/.
+archive:
+	@for f in $(FIGURES); do \
+	  [ -d experiments/$$f/out/$(PROFILE)/runs ] && $(MAKE) -s -C experiments/$$f PROFILE=$(PROFILE) archive || true; done
 
 # The main job: thesis Fig. 3.2 (event-driven curves) at CI scale.
 demo: fig3_2

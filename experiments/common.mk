@@ -3,8 +3,9 @@
 PROFILE ?= quick
 TOP := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
 BIN := $(TOP)/bin
-# runs depend on the simulator's source fingerprint (see the top Makefile), not its binary
-ENGINE := $(BIN)/wetgran-run.engine
+# runs depend on the simulator's behavioural version (scripts/engine-version, rewritten only
+# when a trajectory changes), not on its binary or sources
+ENGINE := $(BIN)/wetgran-run.version
 # PARTIAL=1 draws a sweep from the runs made so far (a campaign under way): runs stay in
 # out/<profile>/runs, everything drawn from them goes to out/<profile>-partial/ and
 # figures/<id>-partial.png, apart from the complete profile's
@@ -45,13 +46,20 @@ ID := $(notdir $(CURDIR))
 FIGNAME := $(ID)$(if $(PARTIAL),-partial)
 FIGURE := $(FIGDIR)/$(FIGNAME).png
 
-# The simulator, through the run archive: a run already in data/runs/<id>/<profile>/, made with
-# the same engine sources, scene and arguments, is copied instead of simulated again
-# (scripts/run-archived).  `make archive` files this profile's completed runs there.
-ARCHIVE := $(TOP)/data/runs/$(ID)/$(PROFILE)
-WGRUN := $(TOP)/scripts/run-archived $(ARCHIVE) $(ENGINE) $(BIN)/wetgran-run
+# The simulator, through the record archive (scripts/record): each run's file in $(RUNDIR) is
+# its record, the run cut down to what the figure is drawn from (conf record_snapshots:
+# none, last, all or K,K...; record_series: the time series kept, or all); the whole run goes
+# to $(RUNDIR)/whole.  A record already in data/records/<id>/<profile>/ made from the same scene
+# and arguments is copied instead of simulated, whatever engine version made it (RERUN=1
+# simulates those of another version again).  `make archive` files this profile's records.
+ARCHIVE := $(TOP)/data/records/$(ID)/$(PROFILE)
+RECORD := --snapshots $(or $(call conf,record_snapshots),none) --series $(or $(call conf,record_series),temperature$(comma)bridges)
+WGRUN := $(TOP)/scripts/record $(ARCHIVE) $(ENGINE) '$(RECORD)' $(BIN)/wetgran-run
 
+# results.tsv ends with the engine versions that made its points (scripts/stamp-engines; the
+# file keeps its time, so nothing is redrawn for it)
 all: $(FIGURE)
+	@$(TOP)/scripts/stamp-engines $(OUT)/results.tsv $(RUNDIR) $(foreach b,$(call conf,borrow),$(TOP)/experiments/$(b)/$(RUNDIR))
 	@echo "$(ID) ($(PROFILE)$(if $(PARTIAL),$(comma) runs made so far)): results in $(CURDIR)/$(OUT)/results.tsv, figure in $(FIGURE) and .pdf"
 
 # $(call gnuplot,SCRIPT,VARIABLES): draw the figure as png and pdf, each renamed when complete
@@ -71,6 +79,6 @@ FORCE:
 .PHONY: FORCE
 
 archive:
-	$(TOP)/scripts/archive-runs $(RUNDIR) $(ARCHIVE)
+	$(TOP)/scripts/archive-records $(RUNDIR) $(ARCHIVE)
 
 .PHONY: all archive

@@ -8,13 +8,27 @@
 # profile (a point only the full scan has).
 # Figures named in FIGURES_SKIP (space-separated ids; CI leaves out those too slow for it)
 # are reported as SKIP and not checked.
-# Usage: scripts/check-figures.sh [quick|full]
+# Usage: scripts/check-figures.sh [quick|full] [ID ...]   (IDs: only those figures)
 set -u
 profile=${1:-quick}
+[ $# -gt 0 ] && shift
 top=${WG_TOP:-$(cd "$(dirname "$0")/.." && pwd)}  # WG_TOP: another tree (tests)
+refs=()
+if [ $# -gt 0 ]; then
+  for id in "$@"; do
+    if [ ! -f "$top/data/reference/$id.tsv" ]; then
+      if [ -d "$top/experiments/$id" ]; then echo "check-figures: $id has no reference numbers (data/reference/$id.tsv)" >&2
+      else echo "check-figures: no figure '$id' (see make help)" >&2; fi
+      exit 2
+    fi
+    refs+=("$top/data/reference/$id.tsv")
+  done
+else
+  refs=("$top"/data/reference/*.tsv)
+fi
 col=3; [ "$profile" = full ] && col=4
 status=0 checked=0 passed=0 failed=0 xfail=0
-for ref in "$top"/data/reference/*.tsv; do
+for ref in "${refs[@]}"; do
   id=$(basename "$ref" .tsv)
   case " ${FIGURES_SKIP:-} " in *" $id "*) echo "SKIP  $id: left out of this job (FIGURES_SKIP)"; continue;; esac
   res="$top/experiments/$id/out/$profile/results.tsv"

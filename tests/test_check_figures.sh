@@ -39,4 +39,13 @@ res figA $'x\t1.1\t0.01'
 WG_TOP=$tmp FIGURES_SKIP=figB "$script" quick > "$tmp/out7"; rc=$?
 check "a key whose quick tolerance is '-' is not checked at quick (missing, still exit 0)" \
   bash -c "[ $rc -eq 0 ] && ! grep -q 'key w' '$tmp/out7' && [ \"\$(tail -n 1 '$tmp/out7')\" = '1 passed, 0 failed' ]"
+# one figure at a time: only those named are checked
+res figB $'y\t2.9\t0.01'
+WG_TOP=$tmp "$script" quick figA > "$tmp/out8"; rc=$?
+check "naming figA checks figA alone (figB, failing, is not looked at)" \
+  bash -c "[ $rc -eq 0 ] && ! grep -q figB '$tmp/out8' && [ \"\$(tail -n 1 '$tmp/out8')\" = '1 passed, 0 failed' ]"
+WG_TOP=$tmp "$script" quick figA figB > "$tmp/out9"; rc=$?
+check "naming both checks both" bash -c "grep -q '^ok    figA' '$tmp/out9' && grep -q 'figB: y = 2.9' '$tmp/out9'"
+WG_TOP=$tmp "$script" quick figZ > "$tmp/out10" 2>&1; rc=$?
+check "an unknown figure: exit 2 naming it" bash -c "[ $rc -eq 2 ] && grep -q \"no figure 'figZ'\" '$tmp/out10'"
 summary

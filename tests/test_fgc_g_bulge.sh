@@ -45,14 +45,14 @@ check "a maximum at the last row is no bulge: no keys, a message naming why" \
 # labels them: the fgc-g line at E* = 1.05-1.08 for Gamma = 2 and 8, 1.55 at 15, 1.30 at 30
 # and 50: the bulge at Gamma = 15, A = 0.83 s_crit.
 if [ -n "${WG_BIN:-}" ]; then
-  filed=$(cd "$(dirname "$0")/../data/runs/fig3_4a/full" && pwd)
+  filed=$(cd "$(dirname "$0")/../data/records/fig3_4a/full" && pwd)
   "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 2> /dev/null > "$tmp/op4a.tsv"
   awk -f "$exp/fgc_g_bulge.awk" -v ecb=0.2844 -v scrit=0.0711 "$tmp/op4a.tsv" > "$tmp/b4a.out"
   check "fig3_4a full: the bulge at Gamma = 15, E* = sqrt(1.5 x 1.6), A / s_crit = 0.826 ($(val fgc_g_bulge_gamma "$tmp/b4a.out"), $(val fgc_g_bulge_estar "$tmp/b4a.out"), $(val fgc_g_bulge_a_over_scrit "$tmp/b4a.out"))" \
     bash -c "[ '$(val fgc_g_bulge_gamma "$tmp/b4a.out")' = 15 ] && $(declare -f near); near $(val fgc_g_bulge_estar "$tmp/b4a.out") $(awk 'BEGIN { print sqrt(2.4) }') && near $(val fgc_g_bulge_a_over_scrit "$tmp/b4a.out") 0.826236"
   # fig3_4b's filed runs (E_cb four times larger, all 140 of its runs; the last 5 lie away from
   # the fgc-g line): the bulge moves to Gamma = 70 and stays near A = s_crit (0.78 against 0.83)
-  filed=$(cd "$(dirname "$0")/../data/runs/fig3_4b/full" && pwd)
+  filed=$(cd "$(dirname "$0")/../data/records/fig3_4b/full" && pwd)
   "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 2> /dev/null > "$tmp/op4b.tsv"
   awk -f "$exp/fgc_g_bulge.awk" -v ecb=1.1376 -v scrit=0.0711 "$tmp/op4b.tsv" > "$tmp/b4b.out"
   check "fig3_4b full: the bulge moves with E_cb to Gamma = 70, E* = sqrt(1.6 x 1.8), at A / s_crit = 0.776 ($(val fgc_g_bulge_gamma "$tmp/b4b.out"), $(val fgc_g_bulge_estar "$tmp/b4b.out"), $(val fgc_g_bulge_a_over_scrit "$tmp/b4b.out"))" \

@@ -66,12 +66,12 @@ check "late=0.5 (default): the second halves, partly of the other phase, put the
 awk -f "$exp/fluid_line_after.awk" -v table=1 -v waits="300 700 900" "$tmp/blt.tsv" > "$tmp/brows.tsv"
 check "after 300 no line (u not yet formed), after 700 sqrt(1.1 x 1.2) (q coexists until 800), after 900 sqrt(1.0 x 1.1)" \
   test "$(tail -n +2 "$tmp/brows.tsv" | cut -f1,3 | tr '\t\n' ': ')" = "700:$(awk 'BEGIN { printf "%.6g", sqrt(1.1 * 1.2) }') 900:$(awk 'BEGIN { printf "%.6g", sqrt(1.1) }') "
-# On the 129 filed runs of the full fig3_4a sweep (elastic, 20 000 t.u., data/runs), labelled
+# On the 129 filed runs of the full fig3_4a sweep (elastic, 20 000 t.u., data/records), labelled
 # as experiments/phase_diagram.mk labels them: the late nucleation at E* = 0.9 (Gamma = 15, 50)
 # and the fluid that lasts (Gamma = 8, 30), and the line after 300 t.u. (every row between 1
 # and 1.05) and after the whole run (the Delaunay fit's 0.90).
 if [ -n "${WG_BIN:-}" ]; then
-  filed=$(cd "$(dirname "$0")/../data/runs/fig3_4a/full" && pwd)
+  filed=$(cd "$(dirname "$0")/../data/records/fig3_4a/full" && pwd)
   "$WG_BIN/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 2> /dev/null |
     awk -F'\t' '$1 !~ /^#/ && $1 != "file" && $2 >= 8 && ($NF == "f" || $NF == "fgc") { print $1, $2, $3, $NF }' |
     while read -r run g e l; do
@@ -93,7 +93,7 @@ if [ -n "${WG_BIN:-}" ]; then
   # (F_B = 8: 0.85 fluid for 320 t.u., 0.9 coexisting at once; F_B = 16: 0.65 for 540, 0.7 for
   # 280), so short runs do not restore the thesis's E* = 1 at large E_cb; after 20 000 t.u. the
   # lines are the ones wetgran-transitions cuts from the labels.
-  filed=$(cd "$(dirname "$0")/../data/runs/fig3_5/full" && pwd)
+  filed=$(cd "$(dirname "$0")/../data/records/fig3_5/full" && pwd)
   runs5=$(for e in 0.7 0.8 0.85 0.9 0.95 1 1.05 1.1 1.15 1.2 1.3 1.4 1.5 1.6; do printf '%s ' "$filed/F1_E$e.h5"; done
           for e in 0.7 0.8 0.85 0.9 0.95 1 1.05 1.1 1.3 1.4; do printf '%s ' "$filed/F2_E$e.h5"; done
           for e in 0.7 0.75 0.8 0.85 0.9; do printf '%s ' "$filed/F8_E$e.h5"; done

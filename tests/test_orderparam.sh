@@ -121,12 +121,12 @@ want=$(relcut "$tmp/relcal.tsv")
 got=$(awk -F'\t' 'NR == 1 { print $6 " " $8 }' "$tmp/relcal.tsv")
 check "--calibrate --relative-contrast: dn = middle of the empty interval around 1/2 = $want, reported as relative (got $got)" \
   awk -v a="${got% *}" -v b="$want" -v m="${got#* }" 'BEGIN { exit !(m == "relative" && b > 0 && (a - b) / b < 1e-4 && (b - a) / b < 1e-4) }'
-# On the 117 filed runs of the full fig3_9 sweep (eps = 0.96, 20 000 t.u., data/runs).  Their
+# On the 117 filed runs of the full fig3_9 sweep (eps = 0.96, 20 000 t.u., data/records).  Their
 # rel_contrast lies below 0.18 (homogeneous) or above 0.55 (coexisting) but for a sparse tail
 # at 0.27-0.47: fluids just before the f-fgc line with a somewhat hotter dilute part (Gamma = 8,
 # E* = 1.7: 9 against 3.3 E_cb).  Otsu's cut (0.41) and the widest gap between the class means
 # (0.23) fall on either side of that tail; the cut around 1/2 lies in 0.47-0.55.
-filed=$(cd "$(dirname "$0")/../data/runs/fig3_9/full" && pwd)
+filed=$(cd "$(dirname "$0")/../data/records/fig3_9/full" && pwd)
 "$bin/wetgran-orderparam" --calibrate --per-scan --relative-contrast "$filed"/G*.h5 > "$tmp/f39.tsv" 2> "$tmp/f39.err"
 want=$(relcut "$tmp/f39.tsv")
 got=$(awk -F'\t' 'NR == 1 { print $6 }' "$tmp/f39.tsv")
@@ -163,7 +163,7 @@ check "filed fig3_9 runs: Gamma = 1.2 is solid at E* = 0.3 and 6 and in fluid-ga
 # Gamma = 3 (8.9), and that cut falls inside the chain: E* = 5 alone would be fluid.  A phase
 # changes only where T_g jumps, so the chain is one phase, labelled by its median (10.4): gas.
 # At Gamma = 3 the homogeneous runs at E* = 1-5 (4.9-2.9 E_cb) lie below the row's own cut.
-filed=$(cd "$(dirname "$0")/../data/runs/fig3_4b/full" && pwd)
+filed=$(cd "$(dirname "$0")/../data/records/fig3_4b/full" && pwd)
 "$bin/wetgran-orderparam" --calibrate --per-scan --relative-contrast --h5 "$tmp/f34b.h5" "$filed"/G*.h5 \
   > "$tmp/f34b.tsv" 2> "$tmp/f34b.err"
 labb() { awk -F'\t' -v g="$1" -v e="$2" '$2 == g && $3 == e { print $NF }' "$tmp/f34b.tsv"; }
