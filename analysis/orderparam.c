@@ -461,9 +461,10 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
       if (!gas && lt[nt - 1] >= log10(th->t_fg)) th->t_fg = pow(10, lt[nt - 1] + ONE_PHASE_DECADES);
       if (gas && lt[0] <= log10(th->t_fg)) th->t_fg = pow(10, lt[0] - ONE_PHASE_DECADES);
       fprintf(stderr, "calibrate: contrast cut dn = %.4g; the %zu homogeneous runs are not separated "
-              "into fluid and gas (T_g/E_cb %.4g-%.4g; Otsu's classes %.3g decades apart, not more "
+              "into fluid and gas (T_g %.4g-%.4g %s; Otsu's classes %.3g decades apart, not more "
               "than %g): one phase, %s (t_fg = %.4g)\n", th->dn, nt, pow(10, lt[0]),
-              pow(10, lt[nt - 1]), apart, ONE_PHASE_DECADES, gas ? "gas" : "fluid", th->t_fg);
+              pow(10, lt[nt - 1]), rows[0].e_cb > 0 ? "E_cb" : "m g d", apart, ONE_PHASE_DECADES,
+              gas ? "gas" : "fluid", th->t_fg);
       cut = NAN;
     }
   }
