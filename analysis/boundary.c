@@ -10,6 +10,7 @@
 
 #include <libqhull_r/qhull_ra.h>
 
+#include "run_open.h"
 #include "wg.h"
 
 #define PROG "wetgran-boundary"
@@ -556,8 +557,7 @@ int main(int argc, char **argv)
   if (!fname || !strcmp(fname, "-")) {
     in = stdin;
     fname = "stdin";
-  } else if (!(in = fopen(fname, "r"))) {
-    fprintf(stderr, PROG ": %s: cannot open: %s\n", fname, strerror(errno));
+  } else if (!(in = wg_table_open(fname))) {
     goto out;
   }
   int rd = read_table(in, fname, &o, &pts);

@@ -27,6 +27,7 @@
 #include <libqhull_r/qhull_ra.h>
 
 #include "io_h5.h"
+#include "run_open.h"
 
 #define PROG "wetgran-delaunay-flc"
 #define POS "/particles/all/position"
@@ -205,7 +206,7 @@ static int open_run(const char *path, snapshots_t *s)
   int rank;
   hsize_t dims[8];
   s->file = path;
-  s->h5 = wg_h5_open_read(path);
+  s->h5 = wg_run_open(path);
   if (s->h5 < 0) return 1;
   if (!wg_h5_exists(s->h5, POS "/value") || !wg_h5_exists(s->h5, POS "/time")) {
     fprintf(stderr, PROG ": %s: no particle snapshots (%s/value and /time missing); "
@@ -338,11 +339,8 @@ bad:
 static int open_text(const char *path, snapshots_t *s)
 {
   s->file = path;
-  FILE *in = fopen(path, "r");
-  if (!in) {
-    fprintf(stderr, PROG ": %s: cannot open: %s\n", path, strerror(errno));
-    return 1;
-  }
+  FILE *in = wg_table_open(path);
+  if (!in) return 1;
   char *line = NULL;
   size_t linecap = 0, poscap = 0, tcap = 0;
   long lineno = 0, nrows = 0, rowcap = 0;

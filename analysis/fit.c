@@ -16,6 +16,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "run_open.h"
+#include "wg_args.h"
+
 #define MAX_COLS 64
 #define MAX_ITER 500
 #define XTOL 1e-10
@@ -152,11 +155,8 @@ static void melt_start(const data *d, double start[3])
 static int read_table(const char *path, const char *xname, const char *yname, double xmin,
                       double xmax, data *d)
 {
-  FILE *f = strcmp(path, "-") ? fopen(path, "r") : stdin;
-  if (!f) {
-    fprintf(stderr, "wetgran-fit: %s: cannot open\n", path);
-    return 1;
-  }
+  FILE *f = wg_table_open(path);
+  if (!f) return 1;
   char line[8192];
   int xc = -1, yc = -1, lineno = 0, header = 0;
   size_t cap = 0;
@@ -242,12 +242,21 @@ int main(int argc, char **argv)
     if (a + 1 < argc && !strcmp(o, "--model")) model = argv[++a];
     else if (a + 1 < argc && !strcmp(o, "--x")) xname = argv[++a];
     else if (a + 1 < argc && !strcmp(o, "--y")) yname = argv[++a];
-    else if (a + 1 < argc && !strcmp(o, "--xmin")) xmin = atof(argv[++a]);
-    else if (a + 1 < argc && !strcmp(o, "--xmax")) xmax = atof(argv[++a]);
-    else if (a + 1 < argc && !strcmp(o, "--prefix")) prefix = argv[++a];
-    else if (a + 1 < argc && !strcmp(o, "--cap")) cap = atof(argv[++a]);
-    else if (a + 1 < argc && !strcmp(o, "--guess"))
-      sscanf(argv[++a], "%lf,%lf,%lf", &guess[0], &guess[1], &guess[2]);
+    else if (a + 1 < argc && (!strcmp(o, "--xmin") || !strcmp(o, "--xmax") || !strcmp(o, "--cap"))) {
+      if (wg_arg_double(o, argv[++a], !strcmp(o, "--xmin") ? &xmin : !strcmp(o, "--xmax") ? &xmax : &cap) != WG_OK)
+        return 2;
+    } else if (a + 1 < argc && !strcmp(o, "--prefix")) prefix = argv[++a];
+    else if (a + 1 < argc && !strcmp(o, "--guess")) {
+      /* up to three comma-separated numbers, each read whole */
+      char buf[256], *save = NULL;
+      int k = 0;
+      snprintf(buf, sizeof buf, "%s", argv[++a]);
+      for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save), k++)
+        if (k >= 3 || wg_arg_double("--guess", tok, &guess[k]) != WG_OK) {
+          if (k >= 3) fprintf(stderr, "wetgran-fit: option --guess: '%s': more than three numbers\n", argv[a]);
+          return 2;
+        }
+    }
     else if (o[0] == '-' && o[1]) {
       fprintf(stderr, "wetgran-fit: unknown or incomplete option '%s' (see --help)\n", o);
       return 2;

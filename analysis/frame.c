@@ -5,6 +5,8 @@
 #include <string.h>
 
 #include "io_h5.h"
+#include "run_open.h"
+#include "wg_args.h"
 
 int main(int argc, char **argv)
 {
@@ -19,8 +21,16 @@ int main(int argc, char **argv)
              "line '# time ...' gives the snapshot time.\n");
       return 0;
     }
-    if (!strcmp(argv[a], "-f") && a + 1 < argc) frame = atol(argv[++a]);
-    else if (!path) path = argv[a];
+    if (!strcmp(argv[a], "-f")) {
+      if (a + 1 == argc) {
+        fprintf(stderr, "wetgran-frame: option -f needs a snapshot number (see --help)\n");
+        return 2;
+      }
+      if (wg_arg_long("-f", argv[++a], &frame) != WG_OK) return 2;
+    } else if (argv[a][0] == '-' && argv[a][1] && !(argv[a][1] >= '0' && argv[a][1] <= '9')) {
+      fprintf(stderr, "wetgran-frame: unknown option '%s' (see --help)\n", argv[a]);
+      return 2;
+    } else if (!path) path = argv[a];
     else {
       fprintf(stderr, "wetgran-frame: unexpected argument '%s' (see --help)\n", argv[a]);
       return 2;
@@ -30,8 +40,7 @@ int main(int argc, char **argv)
     fprintf(stderr, "wetgran-frame: no run file given (see --help)\n");
     return 2;
   }
-  wg_h5_quiet();
-  hid_t f = wg_h5_open_read(path);
+  hid_t f = wg_run_open(path);
   if (f < 0) return 1;
   int rank;
   hsize_t dims[8];

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "io_h5.h"
+#include "run_open.h"
 
 #define BLOCKS 10            /* blocks for the error of time averages */
 #define DRIFT_SIGMAS 3.0     /* a window drifting by more than this many errors ... */
@@ -52,9 +53,16 @@ typedef struct row {
   char label[4];
 } row;
 
-static int param(hid_t f, const char *path, const char *key, double *v)
+/* The parameter key of the run; a missing one is added to 'missing' (reported by the caller,
+   in one line for all of them) rather than reported here. */
+static int param(hid_t f, const char *path, const char *key, double *v, char *missing, size_t len)
 {
   char buf[128];
+  if (H5Aexists_by_name(f, "/parameters", key, H5P_DEFAULT) <= 0) {
+    size_t k = strlen(missing);
+    snprintf(missing + k, len - k, "%s%s", k ? ", " : "", key);
+    return WG_EINVAL;
+  }
   if (wg_h5_read_attr_string(f, "/parameters", key, buf, sizeof buf) != WG_OK) return WG_EIO;
   char *end;
   *v = strtod(buf, &end);
@@ -215,21 +223,29 @@ static int measure(const char *path, row *r)
   memset(r, 0, sizeof *r);
   r->t_fg = r->tg_chain = NAN;
   r->file = path;
-  hid_t f = wg_h5_open_read(path);
+  hid_t f = wg_run_open(path);
   if (f < 0) return WG_EIO;
   int st = WG_OK;
   double t_end, profile_start;
-  st |= param(f, path, "gamma", &r->gamma);
-  st |= param(f, path, "estar", &r->estar);
-  st |= param(f, path, "estar_d", &r->estar_d);
-  st |= param(f, path, "e_cb", &r->e_cb);
-  st |= param(f, path, "eps", &r->eps);
-  st |= param(f, path, "s_crit", &r->s_crit);
-  st |= param(f, path, "t_end", &t_end);
-  st |= param(f, path, "profile_start", &profile_start);
-  if (st != WG_OK) {
+  char missing[256] = "";
+  if (!wg_h5_exists(f, "/parameters")) snprintf(missing, sizeof missing, "the group /parameters");
+  else {
+    st |= param(f, path, "gamma", &r->gamma, missing, sizeof missing);
+    st |= param(f, path, "estar", &r->estar, missing, sizeof missing);
+    st |= param(f, path, "estar_d", &r->estar_d, missing, sizeof missing);
+    st |= param(f, path, "e_cb", &r->e_cb, missing, sizeof missing);
+    st |= param(f, path, "eps", &r->eps, missing, sizeof missing);
+    st |= param(f, path, "s_crit", &r->s_crit, missing, sizeof missing);
+    st |= param(f, path, "t_end", &t_end, missing, sizeof missing);
+    st |= param(f, path, "profile_start", &profile_start, missing, sizeof missing);
+  }
+  if (missing[0]) {
     wg_h5_close(f);
-    return wg_error(WG_EIO, path, "not a shaker run file of wetgran-run (missing parameters)");
+    return wg_error(WG_EINVAL, path, "not a shaker run of wetgran-run (no parameter %s)", missing);
+  }
+  if (st != WG_OK || !wg_h5_exists(f, "/observables/temperature/value")) {
+    wg_h5_close(f);
+    return st != WG_OK ? st : wg_error(WG_EINVAL, path, "no T_g series (/observables/temperature missing)");
   }
   size_t n, nv;
   double *t = read_1d(f, path, "/observables/temperature/time", &n);
@@ -293,6 +309,10 @@ static const char *region(double tg, double t_fg, const thresholds *th)
 static void label(row *r, const thresholds *th)
 {
   double t_fg = isfinite(r->t_fg) ? r->t_fg : th->t_fg;
+  if (!r->has_profiles) { /* no contrasts: homogeneous or coexisting cannot be told */
+    snprintf(r->label, sizeof r->label, "n/a");
+    return;
+  }
   if (r->has_profiles && contrast(r, th) > th->dn) {
     const char *a = region(r->tg_dense, t_fg, th), *b = region(r->tg_dilute, t_fg, th);
     if (strcmp(a, b) != 0) {
@@ -397,6 +417,10 @@ static double half_density_cut(const double *x, size_t n)
    coexistence band whose contrasts span decades (Fig. 3.17), where the linear cut would
    follow the largest values only. */
 #define SOLID_DECADES 1.0
+/* Otsu's two classes of log T_g must lie more than this apart to be fluid and gas: the full
+   archived sweeps separate by 1.05-2.93 decades, the rows of fig3_10 by 0.60-0.63, while seven
+   fluids at T_g/E_cb 0.59-1.15 (one phase) split into classes 0.2 decades apart */
+#define ONE_PHASE_DECADES 0.5
 #define MIN_RUNS_CONTRAST 4 /* fewer runs cannot show two classes of contrast */
 enum { GIVEN_T_SF = 1, GIVEN_T_FG = 2, GIVEN_DN = 4, LOG_CONTRAST = 8 };
 static void calibrate(const row *rows, size_t n, thresholds *th, int given)
@@ -420,10 +444,30 @@ static void calibrate(const row *rows, size_t n, thresholds *th, int given)
   }
   for (size_t i = 0; i < n; i++) {
     double c = contrast(&rows[i], th);
-    if (rows[i].tg > 0 && !(c > th->dn)) lt[nt++] = log10(rows[i].tg);
+    if (rows[i].has_profiles && rows[i].tg > 0 && !(c > th->dn)) lt[nt++] = log10(rows[i].tg);
   }
   qsort(lt, nt, sizeof *lt, cmp_double);
   double cut = nt >= 2 ? otsu_two(lt, nt) : NAN;
+  if (isfinite(cut) && !(given & GIVEN_T_FG)) {
+    /* Otsu always finds two classes; they are fluid and gas only if T_g jumps between them */
+    size_t k = 0;
+    while (k < nt && lt[k] < cut) k++;
+    double apart = mean_of(lt + k, nt - k) - mean_of(lt, k);
+    if (!(apart > ONE_PHASE_DECADES)) {
+      double med = nt % 2 ? lt[nt / 2] : 0.5 * (lt[nt / 2 - 1] + lt[nt / 2]);
+      int gas = med > log10(th->t_fg);
+      /* no boundary is drawn: the given or default t_fg stays if all lie on one side of it,
+         else it moves half a decade beyond the hottest (fluid) or the coldest (gas) run */
+      if (!gas && lt[nt - 1] >= log10(th->t_fg)) th->t_fg = pow(10, lt[nt - 1] + ONE_PHASE_DECADES);
+      if (gas && lt[0] <= log10(th->t_fg)) th->t_fg = pow(10, lt[0] - ONE_PHASE_DECADES);
+      fprintf(stderr, "calibrate: contrast cut dn = %.4g; the %zu homogeneous runs are not separated "
+              "into fluid and gas (T_g %.4g-%.4g %s; Otsu's classes %.3g decades apart, not more "
+              "than %g): one phase, %s (t_fg = %.4g)\n", th->dn, nt, pow(10, lt[0]),
+              pow(10, lt[nt - 1]), rows[0].e_cb > 0 ? "E_cb" : "m g d", apart, ONE_PHASE_DECADES,
+              gas ? "gas" : "fluid", th->t_fg);
+      cut = NAN;
+    }
+  }
   if (isfinite(cut) && (given & GIVEN_T_FG)) {
     fprintf(stderr, "calibrate: contrast cut dn = %.4g; t_fg = %.4g and t_sf = %.4g %s\n", th->dn,
             th->t_fg, th->t_sf, (given & GIVEN_T_SF) ? "as given" : "(t_fg as given)");
@@ -539,7 +583,7 @@ static void calibrate_per_scan(row *rows, size_t n, const thresholds *th, int re
     size_t m = 0;
     for (size_t j = i; j < n; j++) {
       const row *r = &rows[j];
-      if (!same_scan(r, &rows[i])) continue;
+      if (!same_scan(r, &rows[i]) || !r->has_profiles) continue;
       double t[2] = {r->tg, NAN};
       if (r->has_profiles && contrast(r, th) > th->dn) {
         t[0] = r->tg_dense;
@@ -626,14 +670,14 @@ static void scan_chains(row *rows, size_t n, const thresholds *th)
     qsort_r(idx, m, sizeof *idx, by_estar, rows);
     for (size_t a = 0; a < m;) {
       const row *r = &rows[idx[a]];
-      if ((r->has_profiles && contrast(r, th) > th->dn) || !(r->tg > th->t_sf)) {
+      if (!r->has_profiles || contrast(r, th) > th->dn || !(r->tg > th->t_sf)) {
         a++;
         continue;
       }
       size_t b = a + 1;
       while (b < m) {
         const row *q = &rows[idx[b]];
-        if ((q->has_profiles && contrast(q, th) > th->dn) || !(q->tg > th->t_sf) ||
+        if (!q->has_profiles || contrast(q, th) > th->dn || !(q->tg > th->t_sf) ||
             fabs(log10(q->tg) - log10(rows[idx[b - 1]].tg)) > JUMP_COEX_DECADES)
           break;
         b++;
@@ -667,7 +711,7 @@ static void calibrate_solid_per_scan(const row *rows, size_t n, thresholds *th, 
     const row *r = &rows[i];
     double c = contrast(r, th);
     double t_fg = isfinite(r->t_fg) ? r->t_fg : th->t_fg;
-    if (r->tg > 0 && !(c > th->dn) && r->tg < t_fg) lt[k++] = log10(r->tg);
+    if (r->has_profiles && r->tg > 0 && !(c > th->dn) && r->tg < t_fg) lt[k++] = log10(r->tg);
   }
   qsort(lt, k, sizeof *lt, cmp_double);
   double sub = k >= 2 ? otsu_two(lt, k) : NAN, t_sf = t_sf_none, gap = NAN;
@@ -727,8 +771,9 @@ static int inflection(const row *rows, size_t n, int along_gamma)
 }
 
 /* The table as an HDF5 file: one dataset per column, with units and descriptions. */
-static int write_h5(const char *path, const row *rows, size_t n, const thresholds *th)
+static int write_h5(const char *path, const row *rows, size_t n, const thresholds *th, int wet)
 {
+  const char *tu = wet ? "E_cb" : "m g d";
   char tmp[4200];
   snprintf(tmp, sizeof tmp, "%s.tmp", path);
   hid_t f = wg_h5_create(tmp);
@@ -747,15 +792,15 @@ static int write_h5(const char *path, const row *rows, size_t n, const threshold
       {"t0", "sqrt(d/g)", "start of the averaging window", offsetof(row, t0)},
       {"t1", "sqrt(d/g)", "end of the averaging window", offsetof(row, t1)},
       {"drift", "1", "relative difference of the window's halves", offsetof(row, drift)},
-      {"tg", "E_cb", "mean T_g / E_cb over the window (dry: m g d)", offsetof(row, tg)},
-      {"tg_err", "E_cb", "error of tg from block means", offsetof(row, tg_err)},
-      {"tg_dense", "E_cb", "T_g / E_cb of the densest fifth of the bins", offsetof(row, tg_dense)},
-      {"tg_dilute", "E_cb", "T_g / E_cb of the most dilute fifth of the bins", offsetof(row, tg_dilute)},
+      {wet ? "tg_ecb" : "tg_mgd", tu, "mean T_g over the window", offsetof(row, tg)},
+      {wet ? "tg_ecb_err" : "tg_mgd_err", tu, "error of the mean T_g from block means", offsetof(row, tg_err)},
+      {wet ? "tg_dense_ecb" : "tg_dense_mgd", tu, "T_g of the densest fifth of the bins", offsetof(row, tg_dense)},
+      {wet ? "tg_dilute_ecb" : "tg_dilute_mgd", tu, "T_g of the most dilute fifth of the bins", offsetof(row, tg_dilute)},
       {"dn_cb", "d^-(D-1)", "Eq. 3.3: max - min of the bridge density", offsetof(row, dn_cb)},
       {"dn_area", "1", "max - min of the packing fraction", offsetof(row, dn_area)},
       {"rel_contrast", "1", "dn_area over the largest packing fraction of the profile", offsetof(row, rel_contrast)},
-      {"t_fg", "E_cb", "fluid-gas cut of the run's scan (--per-scan; NaN: the global one)", offsetof(row, t_fg)},
-      {"tg_chain", "E_cb", "median tg of the run's chain, which decides fluid or gas (--per-scan; NaN: none)", offsetof(row, tg_chain)},
+      {"t_fg", tu, "fluid-gas cut of the run's scan (--per-scan; NaN: the global one)", offsetof(row, t_fg)},
+      {"tg_chain", tu, "median T_g of the run's chain, which decides fluid or gas (--per-scan; NaN: none)", offsetof(row, tg_chain)},
       {"t_settle", "sqrt(d/g)", "end of T_g's warm-up (MSER-5; NaN: not settled within the run's first half)", offsetof(row, t_settle)},
   };
   hsize_t dims[1] = {n};
@@ -807,14 +852,18 @@ static void usage(FILE *out)
           "                                 %g %% (drift: their relative difference).  Where the\n"
           "                                 warm-up ends goes to stderr for runs that fail, and\n"
           "                                 for every run to --h5 (/orderparam/t_settle)\n"
-          "  tg tg_err                      mean T_g (Eq. 3.2) / E_cb over the window (dry runs:\n"
-          "                                 in m g d) and its error from %d block means\n"
-          "  tg_dense tg_dilute             T_g / E_cb of the densest and most dilute fifth of\n"
-          "                                 the lateral bins (needs profile_bins > 0)\n"
+          "  tg_ecb tg_ecb_err              mean T_g (Eq. 3.2) / E_cb over the window and its\n"
+          "                                 error from %d block means (a table of dry runs,\n"
+          "                                 E_cb = 0: tg_mgd tg_mgd_err, in m g d; wet and dry\n"
+          "                                 runs are not mixed in one table)\n"
+          "  tg_dense_ecb tg_dilute_ecb     T_g / E_cb of the densest and most dilute fifth of\n"
+          "                                 the lateral bins (dry: tg_dense_mgd tg_dilute_mgd)\n"
           "  dn_cb dn_area                  Eq. 3.3: max - min of the bridge density n_cb\n"
           "                                 [1/d^(D-1)] and of the packing fraction\n"
           "  rel_contrast                   dn_area over the profile's largest packing fraction\n"
-          "  label                          s, f, g, sfc, sgc or fgc (see below)\n"
+          "  label                          s, f, g, sfc, sgc or fgc (see below); n/a for a run\n"
+          "                                 without profiles (profile_bins = 0): it is named on\n"
+          "                                 stderr and the exit status is 1\n"
           "Labels: a region is solid below T_g/E_cb = t_sf, a gas above t_fg, fluid between;\n"
           "phases coexist when dn_cb (wet) or dn_area (dry) exceeds dn (with\n"
           "--relative-contrast: when rel_contrast does), and then the densest and most dilute\n"
@@ -829,7 +878,12 @@ static void usage(FILE *out)
           "                             cut of the colder class gives t_sf if its halves lie\n"
           "                             more than a decade apart.  The classes found go to\n"
           "                             stderr, the thresholds to a '#' line before the table;\n"
-          "                             thresholds also given as options are kept\n"
+          "                             thresholds also given as options are kept.  Otsu's\n"
+          "                             classes of log T_g are fluid and gas only if their\n"
+          "                             means lie more than %g decades apart; else the\n"
+          "                             homogeneous runs are one phase (said on stderr) and\n"
+          "                             t_fg stays (or moves %g decades past the hottest\n"
+          "                             fluid or the coldest gas if it would split them)\n"
           "  --log-contrast             with --calibrate: Otsu's cut of log10 of the contrasts,\n"
           "                             for a scan whose contrasts span decades\n"
           "  --relative-contrast        cut rel_contrast instead of dn_cb / dn_area (dn default\n"
@@ -851,6 +905,8 @@ static void usage(FILE *out)
           "                             each other in E* without coexistence between them and\n"
           "                             with T_g changing by at most %g decades per step are one\n"
           "                             phase (a chain): labelled by its median T_g\n"
+          "  --tg-only                  T_g only, for runs without profiles: no label ('-'),\n"
+          "                             no contrasts (nan), exit status 0\n"
           "  --h5 FILE                  also write the table to FILE (HDF5: /orderparam/<column>,\n"
           "                             labels and file names as attributes)\n"
           "  --inflection               instead of the table: the E* where log T_g rises most\n"
@@ -859,7 +915,7 @@ static void usage(FILE *out)
           "  --along estar|gamma        the scan variable of --inflection (default estar; gamma:\n"
           "                             the s-f line of Fig. 3.11, a scan in Gamma at fixed E*)\n",
           100 * WARMUP_IN_WINDOW, DRIFT_SIGMAS, 100 * DRIFT_REL, 100 * DRIFT_GROSS, BLOCKS, default_thresholds.t_sf,
-          default_thresholds.t_fg, default_thresholds.dn, DEFAULT_RELATIVE_DN, JUMP_COEX_DECADES, JUMP_DECADES,
+          default_thresholds.t_fg, default_thresholds.dn, ONE_PHASE_DECADES, ONE_PHASE_DECADES, DEFAULT_RELATIVE_DN, JUMP_COEX_DECADES, JUMP_DECADES,
           JUMP_COEX_DECADES);
 }
 
@@ -875,7 +931,7 @@ static int parse_double(const char *opt, const char *s, double *v)
 int main(int argc, char **argv)
 {
   thresholds th = default_thresholds;
-  int do_calibrate = 0, do_inflection = 0, per_scan = 0, given = 0, along_gamma = 0;
+  int do_calibrate = 0, do_inflection = 0, per_scan = 0, given = 0, along_gamma = 0, tg_only = 0;
   const char *h5_out = NULL;
   const char **files = calloc((size_t)argc, sizeof *files);
   size_t nf = 0;
@@ -890,6 +946,7 @@ int main(int argc, char **argv)
     else if (!strcmp(o, "--log-contrast")) given |= LOG_CONTRAST;
     else if (!strcmp(o, "--relative-contrast")) th.relative = 1;
     else if (!strcmp(o, "--per-scan")) per_scan = 1;
+    else if (!strcmp(o, "--tg-only")) tg_only = 1;
     else if (!strcmp(o, "--inflection")) do_inflection = 1;
     else if (!strcmp(o, "--along") && a + 1 < argc) {
       const char *v = argv[++a];
@@ -921,11 +978,31 @@ int main(int argc, char **argv)
     free(files);
     return 2;
   }
+  if (tg_only && (do_calibrate || do_inflection || h5_out)) {
+    fprintf(stderr, "wetgran-orderparam: --tg-only goes without --calibrate, --inflection and --h5\n");
+    free(files);
+    return 2;
+  }
   if (th.relative && !(given & GIVEN_DN)) th.dn = DEFAULT_RELATIVE_DN;
   wg_h5_quiet();
   row *rows = calloc(nf, sizeof *rows);
-  int st = WG_OK;
+  int st = rows ? WG_OK : WG_ENOMEM;
   for (size_t i = 0; i < nf && st == WG_OK; i++) st = measure(files[i], &rows[i]);
+  /* T_g is divided by E_cb in wet runs only: one table, one unit */
+  size_t wet = 0, dry = 0;
+  for (size_t i = 0; i < nf && st == WG_OK; i++) {
+    if (rows[i].e_cb > 0) wet = i + 1;
+    else dry = i + 1;
+  }
+  if (wet && dry) {
+    fprintf(stderr, "wetgran-orderparam: %s is wet (E_cb = %g, T_g in E_cb) and %s dry (E_cb = 0, T_g "
+            "in m g d): give wet and dry runs in separate tables\n", rows[wet - 1].file,
+            rows[wet - 1].e_cb, rows[dry - 1].file);
+    free(rows);
+    free(files);
+    return 2;
+  }
+  const char *u = wet ? "ecb" : "mgd";
   if (st == WG_OK && do_inflection) {
     st = inflection(rows, nf, along_gamma);
   } else if (st == WG_OK) {
@@ -946,11 +1023,17 @@ int main(int argc, char **argv)
       printf("# thresholds from %zu runs: t_sf\t%.6g\tt_fg\t%.6g\tdn\t%.6g\tcontrast\t%s\n", nf, th.t_sf,
              th.t_fg, th.dn, th.relative ? "relative" : "absolute");
     }
-    printf("file\tgamma\testar\testar_d\te_cb\teps\tt0\tt1\tstationary\tdrift\ttg\ttg_err\t"
-           "tg_dense\ttg_dilute\tdn_cb\tdn_area\trel_contrast\tlabel\n");
+    printf("file\tgamma\testar\testar_d\te_cb\teps\tt0\tt1\tstationary\tdrift\ttg_%s\ttg_%s_err\t"
+           "tg_dense_%s\ttg_dilute_%s\tdn_cb\tdn_area\trel_contrast\tlabel\n", u, u, u, u);
     for (size_t i = 0; i < nf; i++) {
       row *r = &rows[i];
       label(r, &th);
+      if (tg_only) snprintf(r->label, sizeof r->label, "-");
+      else if (!r->has_profiles) {
+        fprintf(stderr, "wetgran-orderparam: %s: no profiles (profile_bins = 0), so no contrasts: "
+                "label n/a (--tg-only for T_g alone)\n", r->file);
+        st = WG_EINVAL;
+      }
       if (!r->stationary) {
         if (!isfinite(r->t_settle))
           fprintf(stderr, "wetgran-orderparam: %s: never became stationary: T_g still settling at half "
@@ -967,7 +1050,7 @@ int main(int argc, char **argv)
              r->drift, r->tg, r->tg_err, r->tg_dense, r->tg_dilute, r->dn_cb, r->dn_area,
              r->rel_contrast, r->label);
     }
-    if (h5_out) st = write_h5(h5_out, rows, nf, &th);
+    if (h5_out && write_h5(h5_out, rows, nf, &th, wet != 0) != WG_OK) st = WG_EIO;
   }
   free(rows);
   free(files);

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "io_h5.h"
+#include "run_open.h"
 
 static const char *fields[] = {"number_density", "packing_fraction", "temperature",
                                "bridge_density"};
@@ -15,12 +16,16 @@ int main(int argc, char **argv)
     fprintf(argc == 2 ? stdout : stderr,
             "Usage: wetgran-profiles RUN.h5\n"
             "Prints the time-averaged lateral profiles (run with profile_bins > 0) as a\n"
-            "tab-separated table: x [d], number density [d^-(D-1)], packing fraction,\n"
-            "T_g [m g d], T_g / E_cb (wet runs; else nan), bridge density n_cb [d^-(D-1)].\n");
+            "tab-separated table, columns:\n"
+            "  x                 [d]          centre of the lateral bin\n"
+            "  number_density    [d^-(D-1)]\n"
+            "  packing_fraction  [1]\n"
+            "  temperature       [m g d]      T_g (Eq. 3.2)\n"
+            "  temperature_ecb   [E_cb]       T_g / E_cb (wet runs; dry runs: nan)\n"
+            "  bridge_density    [d^-(D-1)]   n_cb\n");
     return argc == 2 ? 0 : 2;
   }
-  wg_h5_quiet();
-  hid_t f = wg_h5_open_read(argv[1]);
+  hid_t f = wg_run_open(argv[1]);
   if (f < 0) return 1;
   if (!wg_h5_exists(f, "/observables/profiles/x")) {
     fprintf(stderr, "wetgran-profiles: %s: no profiles in this run (set profile_bins > 0)\n", argv[1]);
@@ -30,6 +35,10 @@ int main(int argc, char **argv)
   int rank;
   hsize_t dims[8];
   int st = wg_h5_dims(f, "/observables/profiles/x", &rank, dims);
+  if (st != WG_OK) {
+    wg_h5_close(f);
+    return 1;
+  }
   size_t b = dims[0];
   double *data = malloc(sizeof(double) * b * 5), e_cb = 0;
   if (!data) return 1;

@@ -10,6 +10,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "run_open.h"
+
 #define MAX_COLS 64
 #define MAX_PAIRS 8
 #define LABEL_LEN 16
@@ -27,11 +29,8 @@ typedef struct table {
 static int read_table(const char *path, const char *xname, const char *gname,
                       const char *lname, table *t)
 {
-  FILE *f = strcmp(path, "-") ? fopen(path, "r") : stdin;
-  if (!f) {
-    fprintf(stderr, "wetgran-transitions: %s: cannot open\n", path);
-    return 1;
-  }
+  FILE *f = wg_table_open(path);
+  if (!f) return 1;
   char line[16384];
   int xc = -1, gc = -1, lc = -1, lineno = 0, header = 0, bad = 0;
   while (!bad && fgets(line, sizeof line, f)) {

@@ -16,7 +16,8 @@ enum {
   WG_ESTOPPED = 6  /* stopped on request after a checkpoint (testing aid) */
 };
 
-/* Central error report: prints "wetgran: <where>: <message>" on stderr and returns
+/* Central error report: prints "<program>: <where>: <message>" on stderr (<program>: the
+   name it was started by, e.g. wetgran-run) and returns
    the status, so one breakpoint on wg_error() catches every failure. */
 int wg_error(int status, const char *where, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));

@@ -1,5 +1,6 @@
 #include "wg.h"
 
+#include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
 
@@ -10,7 +11,8 @@
 int wg_error(int status, const char *where, const char *fmt, ...)
 {
   va_list ap;
-  fprintf(stderr, "wetgran: %s: ", where ? where : "error");
+  /* the program's own name (GNU), so a message says which tool of a pipeline failed */
+  fprintf(stderr, "%s: %s: ", program_invocation_short_name, where ? where : "error");
   va_start(ap, fmt);
   vfprintf(stderr, fmt, ap);
   va_end(ap);

@@ -183,6 +183,7 @@ check "real run: --diffusion --layers 3 gives three layers, bottom to top, D > 0
 "$tool" "$tmp/missing.h5" > /dev/null 2> "$tmp/e1.err"; rc=$?
 check "missing file: non-zero exit, message names it" bash -c "[ $rc -ne 0 ] && grep -q 'missing.h5' '$tmp/e1.err'"
 h5copy -i "$tmp/run.h5" -o "$tmp/nosnap.h5" -s /particles/all/box -d /particles/all/box -p
+h5copy -i "$tmp/run.h5" -o "$tmp/nosnap.h5" -s /h5md -d /h5md
 "$tool" "$tmp/nosnap.h5" > /dev/null 2> "$tmp/e2.err"; rc=$?
 check "HDF5 file without snapshots: non-zero exit, 'nosnap.h5: no particle snapshots'" \
   bash -c "[ $rc -ne 0 ] && grep -q 'nosnap.h5: no particle snapshots' '$tmp/e2.err'"

@@ -15,16 +15,16 @@ small="n=300 lx=100 t_end=300 profile_start=150 profile_bins=25 dt_series=1 dt_c
 "$bin/wetgran-orderparam" "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/op.tsv" 2> "$tmp/op.err"
 col() { awk -F'\t' -v f="$1" -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) k[$i] = i; next } $1 ~ f { print $k[c] }' "$tmp/op.tsv"; }
 check "header and one row per run" test "$(wc -l < "$tmp/op.tsv")" -eq 3
-check "cold bound state (E* = 0.5) is a fluid: T_g/E_cb = $(col cold tg)" test "$(col cold label)" = f
-check "hot state (E* = 2.5) is a gas: T_g/E_cb = $(col hot tg)" test "$(col hot label)" = g
-check "the gas is more than ten times hotter" awk -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(b > 10 * a) }'
+check "cold bound state (E* = 0.5) is a fluid: T_g/E_cb = $(col cold tg_ecb)" test "$(col cold label)" = f
+check "hot state (E* = 2.5) is a gas: T_g/E_cb = $(col hot tg_ecb)" test "$(col hot label)" = g
+check "the gas is more than ten times hotter" awk -v a="$(col cold tg_ecb)" -v b="$(col hot tg_ecb)" 'BEGIN { exit !(b > 10 * a) }'
 "$bin/wetgran-profiles" "$tmp/cold.h5" > "$tmp/prof.tsv"
 dn=$(awk -F'\t' 'NR > 1 { if (min == "" || $6 < min) min = $6; if ($6 > max) max = $6 } END { print max - min }' "$tmp/prof.tsv")
 check "dn_cb is max - min of the bridge-density profile (Eq. 3.3): $(col cold dn_cb) vs $dn" \
   awk -v a="$(col cold dn_cb)" -v b="$dn" 'BEGIN { d = a - b; exit !(d < 1e-4 && d > -1e-4) }'
 tg=$("$bin/wetgran-series" "$tmp/cold.h5" temperature | awk -F'\t' 'NR > 1 && $1 >= 150 { s += $2; n++ } END { print s / n / 0.2844 }')
-check "tg is the window mean of the temperature series over E_cb: $(col cold tg) vs $tg" \
-  awk -v a="$(col cold tg)" -v b="$tg" 'BEGIN { exit !(a / b - 1 < 1e-4 && b / a - 1 < 1e-4) }'
+check "tg is the window mean of the temperature series over E_cb: $(col cold tg_ecb) vs $tg" \
+  awk -v a="$(col cold tg_ecb)" -v b="$tg" 'BEGIN { exit !(a / b - 1 < 1e-4 && b / a - 1 < 1e-4) }'
 
 "$bin/wetgran-orderparam" "$tmp/settling.h5" > "$tmp/op2.tsv" 2> "$tmp/op2.err"
 check "a window that starts in the hot initial state is flagged as not stationary" \
@@ -56,14 +56,14 @@ check "a run still cooling at its end (8 t.u. from 400 E_cb) never became statio
 "$bin/wetgran-orderparam" --calibrate "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/cal.tsv" 2> "$tmp/cal.err"
 tfg=$(awk -F"\t" "NR == 1 { print \$4 }" "$tmp/cal.tsv")
 check "--calibrate puts the fluid/gas cut between the two runs' temperatures ($tfg)" \
-  awk -v c="$tfg" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
+  awk -v c="$tfg" -v a="$(col cold tg_ecb)" -v b="$(col hot tg_ecb)" 'BEGIN { exit !(c > a && c < b) }'
 "$bin/wetgran-orderparam" --calibrate --t-fg 1e6 "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/cal2.tsv" 2> /dev/null
 check "--calibrate keeps a threshold given on the command line (t_fg = 1e6: no gas)" \
   bash -c "awk -F'\t' 'NR == 1 { exit !(\$4 == 1e+06) }' '$tmp/cal2.tsv' && [ \$(grep -c \"\tg\$\" '$tmp/cal2.tsv') -eq 0 ]"
 "$bin/wetgran-orderparam" --h5 "$tmp/op.h5" "$tmp/cold.h5" "$tmp/hot.h5" > /dev/null 2>&1
-h5dump -d /orderparam/tg -y -o "$tmp/tg.txt" "$tmp/op.h5" > /dev/null 2>&1
+h5dump -d /orderparam/tg_ecb -y -o "$tmp/tg.txt" "$tmp/op.h5" > /dev/null 2>&1
 check "--h5 writes the same T_g/E_cb as the table" \
-  awk -v a="$(col cold tg)" -v b="$(tr -s ', \n' '  ' < "$tmp/tg.txt" | awk '{ print $1 }')" 'BEGIN { exit !(a > 0 && (a - b) / a < 1e-5 && (b - a) / a < 1e-5) }'
+  awk -v a="$(col cold tg_ecb)" -v b="$(tr -s ', \n' '  ' < "$tmp/tg.txt" | awk '{ print $1 }')" 'BEGIN { exit !(a > 0 && (a - b) / a < 1e-5 && (b - a) / a < 1e-5) }'
 "$bin/wetgran-orderparam" --inflection "$tmp/cold.h5" "$tmp/hot.h5" > "$tmp/inf.tsv"
 check "--inflection of a two-run scan: the geometric middle sqrt(0.5 * 2.5) +- 1" \
   awk -F'\t' '$1 == "inflection_estar" { d = $2 - sqrt(1.25); ok = (d < 1e-4 && d > -1e-4 && $3 == 1) } END { exit !ok }' "$tmp/inf.tsv"
@@ -202,7 +202,7 @@ check "--per-scan: the fluid is f and the three gases g ($labels)" \
   test "$labels" = "cold.h5:f hot.h5:g hot80a.h5:g hot80b.h5:g "
 cut15=$(sed -n 's/.*scan Gamma = 15,.*t_fg = \([^ ]*\) (its own jump;.*/\1/p' "$tmp/ps.err")
 check "--per-scan: the Gamma = 15 scan's cut ($cut15) lies between its fluid and its gas" \
-  awk -v c="$cut15" -v a="$(col cold tg)" -v b="$(col hot tg)" 'BEGIN { exit !(c > a && c < b) }'
+  awk -v c="$cut15" -v a="$(col cold tg_ecb)" -v b="$(col hot tg_ecb)" 'BEGIN { exit !(c > a && c < b) }'
 check "--per-scan: the Gamma = 80 scan, all gas, takes the nearest scan's cut" \
   grep -q "scan Gamma = 80,.*t_fg = $cut15 (nearest scan's;" "$tmp/ps.err"
 # --per-scan with a cool gas: at Gamma = 2 the gas has T_g/E_cb ~ 16, below the sweep's global

@@ -1,0 +1,20 @@
+/* Opening the inputs of the analysis tools: a run file of wetgran-run, or a text table, with
+   one line on stderr (prefixed by the program's name, through wg_error) saying why a file is
+   not one: missing, empty, not HDF5, truncated or damaged HDF5, HDF5 without /h5md.  So every
+   tool answers a wrong input the same way, whatever it then reads from the file. */
+#ifndef WG_RUN_OPEN_H
+#define WG_RUN_OPEN_H
+
+#include <stdio.h>
+#include <hdf5.h>
+
+/* Open an H5MD run file of wetgran-run read-only.  Returns the file id, or a negative value
+   after one line on stderr.  Switches HDF5's own error printing off (wg_h5_quiet). */
+hid_t wg_run_open(const char *path);
+
+/* Open a tab-separated text table for reading ("-": stdin).  Returns NULL after one line on
+   stderr if the file is missing, unreadable, empty or an HDF5 file (a run given where its
+   table was meant). */
+FILE *wg_table_open(const char *path);
+
+#endif
