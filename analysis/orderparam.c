@@ -52,16 +52,6 @@ typedef struct row {
   char label[4];
 } row;
 
-static int param(hid_t f, const char *path, const char *key, double *v)
-{
-  char buf[128];
-  if (wg_h5_read_attr_string(f, "/parameters", key, buf, sizeof buf) != WG_OK) return WG_EIO;
-  char *end;
-  *v = strtod(buf, &end);
-  if (end == buf) return wg_error(WG_EIO, path, "parameter '%s' = '%s' is not a number", key, buf);
-  return WG_OK;
-}
-
 static double *read_1d(hid_t f, const char *path, const char *name, size_t *n)
 {
   int rank;
@@ -219,14 +209,14 @@ static int measure(const char *path, row *r)
   if (f < 0) return WG_EIO;
   int st = WG_OK;
   double t_end, profile_start;
-  st |= param(f, path, "gamma", &r->gamma);
-  st |= param(f, path, "estar", &r->estar);
-  st |= param(f, path, "estar_d", &r->estar_d);
-  st |= param(f, path, "e_cb", &r->e_cb);
-  st |= param(f, path, "eps", &r->eps);
-  st |= param(f, path, "s_crit", &r->s_crit);
-  st |= param(f, path, "t_end", &t_end);
-  st |= param(f, path, "profile_start", &profile_start);
+  st |= wg_h5_read_param_double(f, "gamma", &r->gamma);
+  st |= wg_h5_read_param_double(f, "estar", &r->estar);
+  st |= wg_h5_read_param_double(f, "estar_d", &r->estar_d);
+  st |= wg_h5_read_param_double(f, "e_cb", &r->e_cb);
+  st |= wg_h5_read_param_double(f, "eps", &r->eps);
+  st |= wg_h5_read_param_double(f, "s_crit", &r->s_crit);
+  st |= wg_h5_read_param_double(f, "t_end", &t_end);
+  st |= wg_h5_read_param_double(f, "profile_start", &profile_start);
   if (st != WG_OK) {
     wg_h5_close(f);
     return wg_error(WG_EIO, path, "not a shaker run file of wetgran-run (missing parameters)");
