@@ -1,10 +1,13 @@
 #!/usr/bin/python3
-"""Plant one fault in a copy of a layout-2 run file, for tests/test_h5md.sh:
+"""Plant faults in copies of a layout-2 run file, for tests/test_h5md.sh:
 
-    h5md_plant.py FILE FAULT      (FILE is changed in place; --list: the faults)
+    h5md_plant.py FILE DIR FAULT ...     DIR/FAULT.h5: a copy of FILE with that one fault
+    h5md_plant.py --list                 the faults
 
 Each fault breaks one rule of tests/h5md_check.py, which must then name that rule.
 """
+import os
+import shutil
 import sys
 
 import h5py
@@ -108,6 +111,9 @@ if __name__ == "__main__":
     if sys.argv[1:] == ["--list"]:
         print("\n".join(FAULTS))
         sys.exit(0)
-    path, fault = sys.argv[1], sys.argv[2]
-    with h5py.File(path, "r+") as f:
-        FAULTS[fault](f)
+    src, out = sys.argv[1], sys.argv[2]
+    for fault in sys.argv[3:]:
+        path = os.path.join(out, fault + ".h5")
+        shutil.copyfile(src, path)
+        with h5py.File(path, "r+") as f:
+            FAULTS[fault](f)

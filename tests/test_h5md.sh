@@ -69,17 +69,16 @@ assert f['observables/walls/floor/step'][()].tolist() == list(range(15))
 "
 check "planted: the checker's rules are listed" bash -c "chk() { '$py' '$here/h5md_check.py' \"\$@\"; }; [ \$(chk --list | grep -cE '^(H|T|P|U|W)[0-9] ') -ge 25 ]"
 
-# planted faults, each in a fresh copy: the checker exits 1 naming the rule
-plant() { # plant FAULT RULE
-  cp "$f" "$tmp/fault.h5"
-  "$py" "$here/h5md_plant.py" "$tmp/fault.h5" "$1" || return 1
-  chk --expect-layout 2 "$tmp/fault.h5" > "$tmp/fault.out"; local rc=$?
-  [ $rc -eq 1 ] && grep -q "^$tmp/fault.h5: $2 " "$tmp/fault.out"
-}
-for fr in drop_version:H2 drop_author:H3 step_rows:T3 time_back:T5 step_float:T1 boundary_open:P3 \
-          id_twice:P6 bad_unit:U3 fixed_unit:U2 foreign_symbol:W2 drop_layout:W1 drop_description:W3 \
-          drop_step_meaning:W4 own_steps:W5 text_parameter:W7 wall_moved:W8 bridges_step:W9; do
-  check "planted fault ${fr%%:*} is named ${fr##*:}" plant "${fr%%:*}" "${fr##*:}"
+# planted faults, each in a copy of its own: the checker exits 1 naming the rule
+faults="drop_version:H2 drop_author:H3 step_rows:T3 time_back:T5 step_float:T1 boundary_open:P3
+        id_twice:P6 bad_unit:U3 fixed_unit:U2 foreign_symbol:W2 drop_layout:W1 drop_description:W3
+        drop_step_meaning:W4 own_steps:W5 text_parameter:W7 wall_moved:W8 bridges_step:W9"
+mkdir -p "$tmp/faults"
+"$py" "$here/h5md_plant.py" "$f" "$tmp/faults" $(for fr in $faults; do echo "${fr%%:*}"; done)
+chk --expect-layout 2 "$tmp"/faults/*.h5 > "$tmp/faults.out"; rc=$?
+check "planted faults: the checker exits 1 (exit $rc)" test "$rc" -eq 1
+for fr in $faults; do
+  check "planted fault ${fr%%:*} is named ${fr##*:}" grep -q "^$tmp/faults/${fr%%:*}.h5: ${fr##*:} " "$tmp/faults.out"
 done
 check "every planted fault is tested" \
   bash -c "[ \$('$py' '$here/h5md_plant.py' --list | wc -l) -eq 17 ]"
