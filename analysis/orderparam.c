@@ -53,21 +53,16 @@ typedef struct row {
   char label[4];
 } row;
 
-/* The parameter key of the run; a missing one is added to 'missing' (reported by the caller,
-   in one line for all of them) rather than reported here. */
-static int param(hid_t f, const char *path, const char *key, double *v, char *missing, size_t len)
+/* The parameter key of the run (a number, or a number as text in old files); a missing one is
+   added to 'missing' (reported by the caller, in one line for all of them). */
+static int param(hid_t f, const char *key, double *v, char *missing, size_t len)
 {
-  char buf[128];
   if (H5Aexists_by_name(f, "/parameters", key, H5P_DEFAULT) <= 0) {
     size_t k = strlen(missing);
     snprintf(missing + k, len - k, "%s%s", k ? ", " : "", key);
     return WG_EINVAL;
   }
-  if (wg_h5_read_attr_string(f, "/parameters", key, buf, sizeof buf) != WG_OK) return WG_EIO;
-  char *end;
-  *v = strtod(buf, &end);
-  if (end == buf) return wg_error(WG_EIO, path, "parameter '%s' = '%s' is not a number", key, buf);
-  return WG_OK;
+  return wg_h5_read_param_double(f, key, v);
 }
 
 static double *read_1d(hid_t f, const char *path, const char *name, size_t *n)
@@ -230,14 +225,14 @@ static int measure(const char *path, row *r)
   char missing[256] = "";
   if (!wg_h5_exists(f, "/parameters")) snprintf(missing, sizeof missing, "the group /parameters");
   else {
-    st |= param(f, path, "gamma", &r->gamma, missing, sizeof missing);
-    st |= param(f, path, "estar", &r->estar, missing, sizeof missing);
-    st |= param(f, path, "estar_d", &r->estar_d, missing, sizeof missing);
-    st |= param(f, path, "e_cb", &r->e_cb, missing, sizeof missing);
-    st |= param(f, path, "eps", &r->eps, missing, sizeof missing);
-    st |= param(f, path, "s_crit", &r->s_crit, missing, sizeof missing);
-    st |= param(f, path, "t_end", &t_end, missing, sizeof missing);
-    st |= param(f, path, "profile_start", &profile_start, missing, sizeof missing);
+    st |= param(f, "gamma", &r->gamma, missing, sizeof missing);
+    st |= param(f, "estar", &r->estar, missing, sizeof missing);
+    st |= param(f, "estar_d", &r->estar_d, missing, sizeof missing);
+    st |= param(f, "e_cb", &r->e_cb, missing, sizeof missing);
+    st |= param(f, "eps", &r->eps, missing, sizeof missing);
+    st |= param(f, "s_crit", &r->s_crit, missing, sizeof missing);
+    st |= param(f, "t_end", &t_end, missing, sizeof missing);
+    st |= param(f, "profile_start", &profile_start, missing, sizeof missing);
   }
   if (missing[0]) {
     wg_h5_close(f);

@@ -69,17 +69,6 @@ static int packed_bed(const wg_scene *sc, double dmax, wg_particle *p)
   return WG_OK;
 }
 
-/* A number stored as text in the /parameters group of a run file. */
-static int parameter(hid_t f, const char *path, const char *key, double *value)
-{
-  char buf[64];
-  if (wg_h5_read_attr_string(f, "/parameters", key, buf, sizeof buf) != WG_OK) return WG_EIO;
-  char *end;
-  *value = strtod(buf, &end);
-  if (end == buf) return wg_error(WG_EIO, path, "/parameters: '%s' is not a number", key);
-  return WG_OK;
-}
-
 static int state_from_run(const wg_scene *sc, wg_particle *p, double *mass)
 {
   const char *path = sc->init_from;
@@ -97,8 +86,8 @@ static int state_from_run(const wg_scene *sc, wg_particle *p, double *mass)
   if (st == WG_OK && (!buf || !t)) st = wg_error(WG_ENOMEM, path, "init_from: no memory");
   if (st == WG_OK) st = wg_h5_read(f, "/particles/all/position/time", H5T_NATIVE_DOUBLE, t);
   if (st == WG_OK) st = wg_h5_read(f, "/particles/all/box/edges", H5T_NATIVE_DOUBLE, edges);
-  if (st == WG_OK) st = parameter(f, path, "amplitude", &amp);
-  if (st == WG_OK) st = parameter(f, path, "omega", &omega);
+  if (st == WG_OK) st = wg_h5_read_param_double(f, "amplitude", &amp);
+  if (st == WG_OK) st = wg_h5_read_param_double(f, "omega", &omega);
   double len[2] = {sc->lx, sc->ly};
   for (int k = 0; st == WG_OK && k < up; k++)
     if (fabs(edges[k] - len[k]) > 1e-9 * len[k])

@@ -318,6 +318,22 @@ int wg_h5_attr_string(hid_t loc, const char *obj_path, const char *name, const c
   return attr_put_str(loc, obj_path, name, 0, strlen(s) + 1, s);
 }
 
+int wg_h5_attr_string_vl(hid_t loc, const char *obj_path, const char *name, const char *s)
+{
+  hid_t t = H5Tcopy(H5T_C_S1);
+  int rc;
+  if (!s) return bad(loc, obj_path, "attribute '%s': null string", name ? name : "?");
+  if (t < 0 || H5Tset_size(t, H5T_VARIABLE) < 0 || H5Tset_cset(t, H5T_CSET_ASCII) < 0)
+    return close_id(t, fail(loc, obj_path, "create string type for attribute '%s'", name));
+  rc = attr_put_n(loc, obj_path, name, t, t, 0, &s);
+  return close_id(t, rc);
+}
+
+int wg_h5_attr_ullong(hid_t loc, const char *obj_path, const char *name, unsigned long long v)
+{
+  return attr_put_n(loc, obj_path, name, H5T_STD_U64LE, H5T_NATIVE_ULLONG, 0, &v);
+}
+
 int wg_h5_attr_string_fixed(hid_t loc, const char *obj_path, const char *name, const char *s,
                             size_t len)
 {
@@ -431,6 +447,38 @@ int wg_h5_read_attr_string(hid_t loc, const char *obj_path, const char *name, ch
   return close_id(a, close_id(t, close_id(mt, rc)));
 }
 
+int wg_h5_read_param_double(hid_t file, const char *key, double *v)
+{
+  hid_t a, t = H5I_INVALID_HID;
+  int rc;
+  H5T_class_t cls = H5T_NO_CLASS;
+  char buf[128], *end;
+  if ((rc = attr_open1(file, "/parameters", key, &a))) return rc;
+  if ((t = H5Aget_type(a)) < 0 || (cls = H5Tget_class(t)) == H5T_NO_CLASS) {
+    rc = fail(file, "/parameters", "get type of parameter '%s'", key);
+  } else if (cls == H5T_INTEGER || cls == H5T_FLOAT) {
+    if (H5Aread(a, H5T_NATIVE_DOUBLE, v) < 0) rc = fail(file, "/parameters", "read parameter '%s'", key);
+  } else if (cls != H5T_STRING) {
+    rc = bad(file, "/parameters", "parameter '%s' is neither a number nor a string", key);
+  }
+  rc = close_id(t, close_id(a, rc));
+  if (rc || cls != H5T_STRING) return rc;
+  /* layout 1: every value as text */
+  if ((rc = wg_h5_read_attr_string(file, "/parameters", key, buf, sizeof buf))) return rc;
+  *v = strtod(buf, &end);
+  if (end == buf || *end)
+    return bad(file, "/parameters", "parameter '%s' = '%s' is not a number", key, buf);
+  return WG_OK;
+}
+
+int wg_h5_layout(hid_t file)
+{
+  long long v;
+  htri_t e = H5Aexists_by_name(file, "/h5md/creator", "wetgran_layout", H5P_DEFAULT);
+  if (e <= 0 || wg_h5_read_attr_llong(file, "/h5md/creator", "wetgran_layout", &v) != WG_OK) return 1;
+  return (int)v;
+}
+
 /* ---- datasets -------------------------------------------------------------------------- */
 
 /* Create a contiguous dataset (parent groups with timestamps off, dataset timestamps off) with
@@ -460,7 +508,7 @@ static int dset_create(hid_t loc, const char *path, hid_t mem_type, int rank, co
     rc = fail(loc, path, "set up dataset creation properties");
   else if ((d = H5Dcreate2(loc, path, ft, space, lcpl, dcpl, H5P_DEFAULT)) < 0)
     rc = fail(loc, path, "create dataset");
-  else if (!(rc = wg_h5_attr_string(d, ".", "unit", unit)))
+  else if (!(rc = wg_h5_attr_string_vl(d, ".", "unit", unit)))
     rc = wg_h5_attr_string(d, ".", "description", description);
   rc = close_id(ft, close_id(space, close_id(dcpl, close_id(lcpl, rc))));
   if (rc) return close_id(d, rc);
@@ -591,7 +639,22 @@ int wg_h5md_header(hid_t file, const char *author, const char *creator, const ch
       (rc = make_group(file, "/h5md/creator")) ||
       (rc = wg_h5_attr_string(file, "/h5md/creator", "name", creator)))
     return rc;
-  return wg_h5_attr_string(file, "/h5md/creator", "version", creator_version);
+  if ((rc = wg_h5_attr_string(file, "/h5md/creator", "version", creator_version))) return rc;
+  return attr_put_n(file, "/h5md/creator", "wetgran_layout", H5T_STD_I32LE, H5T_NATIVE_INT, 0,
+                    &(int){WG_H5_LAYOUT});
+}
+
+int wg_h5md_units(hid_t file, const char *system, int n, const char *const *symbol,
+                  const char *const *meaning)
+{
+  static const int version[2] = {1, 0};
+  const char *g = "/h5md/modules/units";
+  int rc;
+  if ((rc = make_group(file, g)) || (rc = wg_h5_attr_ints(file, g, "version", 2, version)) ||
+      (rc = wg_h5_attr_string_vl(file, g, "system", system)))
+    return rc;
+  for (int i = 0; i < n && !rc; i++) rc = wg_h5_attr_string(file, g, symbol[i], meaning[i]);
+  return rc;
 }
 
 int wg_h5md_box(hid_t file, const char *group, int dim, const double *edges,
@@ -638,12 +701,12 @@ int wg_h5md_element_create(hid_t file, const char *path, hid_t mem_type, int fra
   el->nframes = nframes;
   el->written = 0;
   snprintf(p, sizeof p, "%s/step", path);
-  rc = dset_create(file, p, H5T_NATIVE_LLONG, 1, dims, "1", "Simulation step of each frame.",
+  rc = dset_create(file, p, H5T_NATIVE_LLONG, 1, dims, "1", WG_H5_STEP_MEANING,
                    H5D_FILL_TIME_ALLOC, &el->step);
   snprintf(p, sizeof p, "%s/time", path);
   if (!rc)
-    rc = dset_create(file, p, H5T_NATIVE_DOUBLE, 1, dims, "sqrt(d/g)",
-                     "Simulation time of each frame.", H5D_FILL_TIME_ALLOC, &el->time);
+    rc = dset_create(file, p, H5T_NATIVE_DOUBLE, 1, dims, "tau",
+                     "simulated time of each frame", H5D_FILL_TIME_ALLOC, &el->time);
   snprintf(p, sizeof p, "%s/value", path);
   if (!rc)
     rc = dset_create(file, p, mem_type, frame_rank + 1, dims, unit, description,

@@ -29,7 +29,8 @@ int wg_h5_exists(hid_t loc, const char *path);
 /* Write a whole dataset in one call (contiguous layout; intermediate groups created).
    mem_type is the memory type (H5T_NATIVE_DOUBLE, H5T_NATIVE_INT, H5T_NATIVE_LLONG,
    H5T_NATIVE_UINT8 ...); the file type is the matching little-endian standard type.
-   unit: e.g. "d", "sqrt(d/g)", "m g d", "1" for dimensionless; description: one sentence. */
+   unit: in the grammar of the H5MD units module (a variable-length string): e.g. "d", "tau",
+   "m d+2 tau-2", "1" for dimensionless; description: one sentence. */
 int wg_h5_write(hid_t loc, const char *path, hid_t mem_type, int rank, const hsize_t *dims,
                 const void *data, const char *unit, const char *description);
 
@@ -50,6 +51,9 @@ int wg_h5_attr_doubles(hid_t loc, const char *obj_path, const char *name, int n,
 int wg_h5_attr_llong(hid_t loc, const char *obj_path, const char *name, long long v);
 int wg_h5_attr_ints(hid_t loc, const char *obj_path, const char *name, int n, const int *v);
 int wg_h5_attr_string(hid_t loc, const char *obj_path, const char *name, const char *s);
+/* A scalar variable-length ASCII string (the H5MD units module's "unit" and "system"). */
+int wg_h5_attr_string_vl(hid_t loc, const char *obj_path, const char *name, const char *s);
+int wg_h5_attr_ullong(hid_t loc, const char *obj_path, const char *name, unsigned long long v);
 /* A fixed-length string padded with NULs to len bytes, so that rewriting the value never moves
    data in the file (used for the volatile provenance). */
 int wg_h5_attr_string_fixed(hid_t loc, const char *obj_path, const char *name, const char *s,
@@ -64,10 +68,33 @@ int wg_h5_read_attr_llong(hid_t loc, const char *obj_path, const char *name, lon
 int wg_h5_read_attr_string(hid_t loc, const char *obj_path, const char *name, char *buf,
                            size_t len);
 
+/* A number of the run file's /parameters group: numeric attributes (layout 2) and numbers
+   stored as text (layout 1) are both accepted. */
+int wg_h5_read_param_double(hid_t file, const char *key, double *v);
+
 /* ---- H5MD 1.1 ---- */
 
-/* /h5md group: attribute version = {1, 1}; /h5md/author (name); /h5md/creator (name, version). */
+/* wetgran's own layout version, attribute "wetgran_layout" on /h5md/creator.  1 (no
+   attribute): files before it, with every parameter as text and step counting each element's
+   own samples.  2: typed parameters, one step clock (below), units module, walls, id/species. */
+#define WG_H5_LAYOUT 2
+int wg_h5_layout(hid_t file);
+
+/* What a step is (layout 2): the description of every step dataset, and the attribute
+   step_meaning on /particles/all and /observables. */
+#define WG_H5_STEP_MEANING \
+  "step of the run's one sampling clock: the instants at which anything is recorded (a " \
+  "time-series sample or a snapshot), numbered from 0 in increasing time; equal steps are " \
+  "equal times in every element of the file"
+
+/* /h5md group: attribute version = {1, 1}; /h5md/author (name); /h5md/creator (name, version,
+   wetgran_layout = WG_H5_LAYOUT). */
 int wg_h5md_header(hid_t file, const char *author, const char *creator, const char *creator_version);
+
+/* The H5MD units module: /h5md/modules/units with version {1, 0}, system, and one string
+   attribute per unit symbol saying what it is. */
+int wg_h5md_units(hid_t file, const char *system, int n, const char *const *symbol,
+                  const char *const *meaning);
 
 /* /particles/<group>/box: attributes dimension (int) and boundary (string array,
    "periodic" or "none" per axis), dataset edges[dim] [d]. */
@@ -75,7 +102,7 @@ int wg_h5md_box(hid_t file, const char *group, int dim, const double *edges,
                 const char *const *boundary);
 
 /* A time-dependent H5MD element at path (e.g. "/particles/all/position"): a group holding
-   step[nframes] (int64), time[nframes] (double, unit "sqrt(d/g)") and
+   step[nframes] (int64), time[nframes] (double, unit "tau") and
    value[nframes][frame_dims...] (unit and description given).  Frames are then written one at
    a time, in order. */
 typedef struct wg_h5md_element {

@@ -35,20 +35,20 @@ enum {
 };
 
 static const series_column columns[NCOL] = {
-    {"time", "sqrt(d/g)", "simulated time of the sample", 0, NULL},
-    {"kinetic_energy", "m g d", "total kinetic energy, sum of m v^2 / 2", 0,
+    {"time", "tau", "simulated time of the sample", 0, NULL},
+    {"kinetic_energy", "m d+2 tau-2", "total kinetic energy, sum of m v^2 / 2", 0,
      "total kinetic energy, sum of m v^2 / 2 (with friction: plus I w^2 / 2)"},
-    {"potential_energy", "m g d", "total potential energy in gravity, sum of m g z (z = 0 at the floor's mean position)", 0,
+    {"potential_energy", "m d+2 tau-2", "total potential energy in gravity, sum of m g z (z = 0 at the floor's mean position)", 0,
      "potential energy: gravity (sum of m g z, z = 0 at the floor's mean position) + elastic energy of the overlaps (and of the tangential springs) + bond energy (F_B gap, or Eq. 2.9 integrated)"},
-    {"injected_wall", "m g d", "work done on the particles by the moving walls since t = 0", 0, NULL},
-    {"dissipated_collisions", "m g d", "energy lost in inelastic particle collisions since t = 0 (Eq. 2.6)", 0,
+    {"injected_wall", "m d+2 tau-2", "work done on the particles by the moving walls since t = 0", 0, NULL},
+    {"dissipated_collisions", "m d+2 tau-2", "energy lost in inelastic particle collisions since t = 0 (Eq. 2.6)", 0,
      "energy lost in the dashpots of particle contacts since t = 0 (with friction: and in their tangential forces)"},
-    {"dissipated_wall", "m g d", "energy lost in inelastic wall collisions since t = 0", 0,
+    {"dissipated_wall", "m d+2 tau-2", "energy lost in inelastic wall collisions since t = 0", 0,
      "energy lost in the dashpots of wall contacts since t = 0 (with friction: and in their tangential forces)"},
-    {"dissipated_ruptures", "m g d", "energy taken by capillary bridge ruptures since t = 0, E_cb each", 0,
+    {"dissipated_ruptures", "m d+2 tau-2", "energy taken by capillary bridge ruptures since t = 0, E_cb each", 0,
      "bond energy taken by ruptures (minus that given by captures at an overlap) since t = 0"},
     {"ledger_residual", "1", "|E(t) - E(0) - injected + dissipated| / energy scale of the run", 0, NULL},
-    {"temperature", "m g d", "granular temperature T_g = sum m |v - V_cm|^2 / (N D) (Eq. 3.2)", 0, NULL},
+    {"temperature", "m d+2 tau-2", "granular temperature T_g = sum m |v - V_cm|^2 / (N D) (Eq. 3.2)", 0, NULL},
     {"bridges", "1", "number of capillary bridges", 0, NULL},
     {"collisions", "1", "particle-particle collisions since t = 0", 0,
      "particle-particle contacts begun since t = 0"},
@@ -334,14 +334,14 @@ static int ckpt_write_ed(wg_run *run, hid_t f)
   for (long i = 0; i < n; i++) memcpy(buf + 3 * i, s->p[i].r, sizeof(double) * 3);
   st |= wg_h5_write(f, "state/r", H5T_NATIVE_DOUBLE, 2, d2, buf, "d", "positions at time now");
   for (long i = 0; i < n; i++) memcpy(buf + 3 * i, s->p[i].v, sizeof(double) * 3);
-  st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, buf, "sqrt(g d)", "velocities");
+  st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, buf, "d tau-1", "velocities");
   for (long i = 0; i < n; i++) buf[i] = s->p[i].radius;
   st |= wg_h5_write(f, "state/radius", H5T_NATIVE_DOUBLE, 1, d1, buf, "d", "radii");
   st |= wg_h5_write(f, "state/id", H5T_NATIVE_INT32, 1, d1, s->id, "1", "identity of the particle in each slot");
   free(buf);
   if (s->mass) st |= wg_h5_write(f, "state/mass", H5T_NATIVE_DOUBLE, 1, d1, s->mass, "m", "masses");
   if (s->t_last)
-    st |= wg_h5_write(f, "state/t_last", H5T_NATIVE_DOUBLE, 1, d1, s->t_last, "sqrt(d/g)",
+    st |= wg_h5_write(f, "state/t_last", H5T_NATIVE_DOUBLE, 1, d1, s->t_last, "tau",
                       "time of each particle's last collision (TC model)");
   if (s->wet) {
     hsize_t db[1] = {(hsize_t)n * (hsize_t)s->bond_cap};
@@ -360,7 +360,7 @@ static int ckpt_write_ed(wg_run *run, hid_t f)
                        s->ledger.dissipated_rupt.s, s->ledger.dissipated_rupt.c,
                        s->ledger.e0, s->ledger.scale};
   hsize_t d10[1] = {10};
-  st |= wg_h5_write(f, "run/ledger", H5T_NATIVE_DOUBLE, 1, d10, ledger, "m g d", "ledger sums");
+  st |= wg_h5_write(f, "run/ledger", H5T_NATIVE_DOUBLE, 1, d10, ledger, "m d+2 tau-2", "ledger sums");
   unsigned long long ws[3] = {s->wall_stats.calls, s->wall_stats.pieces, s->wall_stats.evaluations};
   hsize_t d3[1] = {3};
   st |= wg_h5_write(f, "run/wall_stats", H5T_NATIVE_ULLONG, 1, d3, ws, "1", "wall solver work");
@@ -395,7 +395,7 @@ static int ckpt_write_td(wg_run *run, hid_t f)
   long n = s->n, np = s->npair;
   hsize_t d2[2] = {(hsize_t)n, 3}, d1[1] = {(hsize_t)n}, dp[2] = {(hsize_t)np, 2};
   st |= wg_h5_write(f, "state/r", H5T_NATIVE_DOUBLE, 2, d2, s->r, "d", "positions");
-  st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, s->v, "sqrt(g d)", "velocities");
+  st |= wg_h5_write(f, "state/v", H5T_NATIVE_DOUBLE, 2, d2, s->v, "d tau-1", "velocities");
   st |= wg_h5_write(f, "state/f", H5T_NATIVE_DOUBLE, 2, d2, s->f, "m g", "forces");
   st |= wg_h5_write(f, "state/r_built", H5T_NATIVE_DOUBLE, 2, d2, s->r_built, "d", "positions at the last list build");
   if (s->gear) {
@@ -410,8 +410,8 @@ static int ckpt_write_td(wg_run *run, hid_t f)
   }
   if (s->rot) {
     hsize_t dw[2] = {2 * (hsize_t)n, 4};
-    st |= wg_h5_write(f, "state/w", H5T_NATIVE_DOUBLE, 2, d2, s->w, "sqrt(g/d)", "angular velocities");
-    st |= wg_h5_write(f, "state/torque", H5T_NATIVE_DOUBLE, 2, d2, s->tq, "m g d", "torques");
+    st |= wg_h5_write(f, "state/w", H5T_NATIVE_DOUBLE, 2, d2, s->w, "tau-1", "angular velocities");
+    st |= wg_h5_write(f, "state/torque", H5T_NATIVE_DOUBLE, 2, d2, s->tq, "m d+2 tau-2", "torques");
     st |= wg_h5_write(f, "state/wall_spring", H5T_NATIVE_DOUBLE, 2, dw, s->wall_spring, "d, m g / d",
                       "tangential springs on the walls (2 i + wall): extension, stiffness");
     if (np) {
@@ -444,7 +444,7 @@ static int ckpt_write_td(wg_run *run, hid_t f)
   for (int k = 0; k < TD_NLEDGER; k++) ledger[k] = *td_ledger((wg_td *)s, k);
   hsize_t d6[1] = {TD_NCOUNT}, d15[1] = {TD_NLEDGER};
   st |= wg_h5_write(f, "run/td_counts", H5T_NATIVE_ULLONG, 1, d6, counts, "1", "steps, rebuilds, captures, ruptures, contacts, wall contacts");
-  st |= wg_h5_write(f, "run/td_ledger", H5T_NATIVE_DOUBLE, 1, d15, ledger, "m g d", "ledger sums, energies and powers, t0");
+  st |= wg_h5_write(f, "run/td_ledger", H5T_NATIVE_DOUBLE, 1, d15, ledger, "m d+2 tau-2", "ledger sums, energies and powers, t0");
   st |= wg_h5_attr_double(f, ".", "now", s->t);
   return st;
 }
@@ -466,7 +466,7 @@ static int ckpt_write_observers(wg_run *run, hid_t f)
   st |= wg_h5_write(f, "run/prof_bridges", H5T_NATIVE_DOUBLE, 1, dp, run->prof.bridges, "-", "profile sums");
   hsize_t df[1] = {(hsize_t)run->nframes};
   if (run->nframes) {
-    st |= wg_h5_write(f, "run/frame_time", H5T_NATIVE_DOUBLE, 1, df, run->frame_time, "sqrt(d/g)", "frame times");
+    st |= wg_h5_write(f, "run/frame_time", H5T_NATIVE_DOUBLE, 1, df, run->frame_time, "tau", "frame times");
     st |= wg_h5_write(f, "run/frame_bonds", H5T_NATIVE_LLONG, 1, df, run->frame_bonds, "1", "bridges per frame");
   }
   long long k[7] = {run->k_series, run->k_snapshot, run->k_profile, run->k_checkpoint,
@@ -700,6 +700,46 @@ static int checkpoint_load(wg_run *run)
 
 /* ---------- the run file ---------- */
 
+/* The run's one sampling clock (layout 2): every instant at which something is recorded
+   (a time-series sample or a snapshot), sorted and without repeats; an instant's step is its
+   index.  Rebuilt from the recorded times at the end, so a resumed run gets the same steps. */
+typedef struct run_clock {
+  double *t;
+  size_t n;
+} run_clock;
+
+static int cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+static int clock_build(const wg_run *run, run_clock *c)
+{
+  size_t n = run->rows + (size_t)run->nframes, k = 0;
+  c->n = 0;
+  if (!(c->t = malloc(sizeof(double) * (n ? n : 1))))
+    return wg_error(WG_ENOMEM, "run file", "no memory for the sampling clock");
+  for (size_t r = 0; r < run->rows; r++) c->t[k++] = run->series[r * NCOL + COL_TIME];
+  for (long i = 0; i < run->nframes; i++) c->t[k++] = run->frame_time[i];
+  qsort(c->t, n, sizeof(double), cmp_double);
+  for (size_t i = 0; i < n; i++)
+    if (c->n == 0 || c->t[i] != c->t[c->n - 1]) c->t[c->n++] = c->t[i];
+  return WG_OK;
+}
+
+/* Step of recorded time t (always on the clock, which holds every recorded time). */
+static long long clock_step(const run_clock *c, double t)
+{
+  size_t lo = 0, hi = c->n;
+  while (hi - lo > 1) {
+    size_t mid = lo + (hi - lo) / 2;
+    if (c->t[mid] <= t) lo = mid;
+    else hi = mid;
+  }
+  return (long long)lo;
+}
+
 typedef struct text_buf {
   char *s;
   size_t len, cap;
@@ -734,12 +774,20 @@ static char *scene_fingerprint(const wg_scene *sc)
   return t.s;
 }
 
+/* One parameter, typed (layout 2): the text the scene visitor gives is exact ("%.17g" for
+   reals), so converting it back loses nothing. */
 static int parameter_attr(void *user, const char *key, const char *value, const char *unit,
                           const char *description)
 {
   hid_t g = *(hid_t *)user;
   (void)unit;
   (void)description;
+  switch (wg_scene_key_kind(key)) {
+  case WG_KEY_REAL: return wg_h5_attr_double(g, ".", key, strtod(value, NULL));
+  case WG_KEY_INT: return wg_h5_attr_llong(g, ".", key, strtoll(value, NULL, 10));
+  case WG_KEY_UINT: return wg_h5_attr_ullong(g, ".", key, strtoull(value, NULL, 10));
+  case WG_KEY_WORD: break;
+  }
   return wg_h5_attr_string(g, ".", key, value);
 }
 
@@ -793,7 +841,7 @@ static int write_provenance(wg_run *run, hid_t f, double wall_s)
   return st;
 }
 
-static int write_series(wg_run *run, hid_t f)
+static int write_series(wg_run *run, hid_t f, const run_clock *clk)
 {
   int st = WG_OK;
   double *col = malloc(sizeof(double) * (run->rows ? run->rows : 1));
@@ -803,7 +851,7 @@ static int write_series(wg_run *run, hid_t f)
     free(step);
     return wg_error(WG_ENOMEM, "run file", "no memory for the time series");
   }
-  for (size_t r = 0; r < run->rows; r++) step[r] = (long long)r;
+  for (size_t r = 0; r < run->rows; r++) step[r] = clock_step(clk, run->series[r * NCOL + COL_TIME]);
   for (int c = 1; c < NCOL && st == WG_OK; c++) {
     if (!column_used(run, c)) continue;
     char path[160];
@@ -817,7 +865,7 @@ static int write_series(wg_run *run, hid_t f)
     snprintf(path, sizeof path, "/observables/%s/time", columns[c].name);
     st |= wg_h5_write(f, path, H5T_NATIVE_DOUBLE, 1, dims, col, columns[COL_TIME].unit, columns[COL_TIME].description);
     snprintf(path, sizeof path, "/observables/%s/step", columns[c].name);
-    st |= wg_h5_write(f, path, H5T_NATIVE_LLONG, 1, dims, step, "1", "index of the sample");
+    st |= wg_h5_write(f, path, H5T_NATIVE_LLONG, 1, dims, step, "1", WG_H5_STEP_MEANING);
   }
   free(col);
   free(step);
@@ -848,16 +896,17 @@ static int write_profiles(wg_run *run, hid_t f)
     ncb[k] = pr->bridges[k] / (samples * width * cross);
   }
   hsize_t dims[1] = {(hsize_t)b};
+  const char *per_area = dim == 3 ? "d-2" : "d-1";
   int st = WG_OK;
   st |= wg_h5_write(f, "/observables/profiles/x", H5T_NATIVE_DOUBLE, 1, dims, x, "d", "centre of each lateral bin along x");
   st |= wg_h5_write(f, "/observables/profiles/number_density", H5T_NATIVE_DOUBLE, 1, dims, nd,
-                    "d^-(D-1)", "time-averaged particles per lateral area (projected along gravity)");
+                    per_area, "time-averaged particles per lateral area (projected along gravity)");
   st |= wg_h5_write(f, "/observables/profiles/packing_fraction", H5T_NATIVE_DOUBLE, 1, dims, pf, "1",
                     "time-averaged area (2D) or volume (3D) fraction of the bin's column between floor and lid");
-  st |= wg_h5_write(f, "/observables/profiles/temperature", H5T_NATIVE_DOUBLE, 1, dims, tg, "m g d",
+  st |= wg_h5_write(f, "/observables/profiles/temperature", H5T_NATIVE_DOUBLE, 1, dims, tg, "m d+2 tau-2",
                     "granular temperature in the bin: sum m |v - V_bin|^2 / (count D), sums over all samples");
   st |= wg_h5_write(f, "/observables/profiles/bridge_density", H5T_NATIVE_DOUBLE, 1, dims, ncb,
-                    "d^-(D-1)", "time-averaged capillary bridges per lateral area, n_cb (half a bridge per particle end)");
+                    per_area, "time-averaged capillary bridges per lateral area, n_cb (half a bridge per particle end)");
   st |= wg_h5_attr_double(f, "/observables/profiles", "t_start", run->sc->profile_start);
   st |= wg_h5_attr_llong(f, "/observables/profiles", "samples", pr->samples);
   st |= wg_h5_attr_double(f, "/observables/profiles", "e_cb", run->sc->e_cb);
@@ -867,7 +916,7 @@ static int write_profiles(wg_run *run, hid_t f)
 
 /* Copy the snapshot frames from the scratch file into H5MD elements (angular velocities
    only with friction). */
-static int write_frames(wg_run *run, hid_t f)
+static int write_frames(wg_run *run, hid_t f, const run_clock *clk)
 {
   long n = run->sc->n;
   int dim = run->sc->dim, st = WG_OK;
@@ -880,10 +929,10 @@ static int write_frames(wg_run *run, hid_t f)
   hsize_t F = (hsize_t)run->nframes;
   if (nw)
     st |= wg_h5md_element_create(f, "/particles/all/angular_velocity", H5T_NATIVE_DOUBLE, nw == 1 ? 1 : 2,
-                                 fw, F, "sqrt(g/d)", nw == 1 ? "angular velocities (about z)" : "angular velocities", &spin);
+                                 fw, F, "tau-1", nw == 1 ? "angular velocities (about z)" : "angular velocities", &spin);
   st |= wg_h5md_element_create(f, "/particles/all/position", H5T_NATIVE_DOUBLE, 2, fd, F, "d",
-                               "particle centres, wrapped into the box", &pos);
-  st |= wg_h5md_element_create(f, "/particles/all/velocity", H5T_NATIVE_DOUBLE, 2, fd, F, "sqrt(g d)",
+                               "particle centres in the lab frame, wrapped into the box along periodic axes", &pos);
+  st |= wg_h5md_element_create(f, "/particles/all/velocity", H5T_NATIVE_DOUBLE, 2, fd, F, "d tau-1",
                                "particle velocities", &vel);
   st |= wg_h5md_element_create(f, "/particles/all/bridge_count", H5T_NATIVE_UINT8, 1, fb, F, "1",
                                "number of capillary bridges of each particle", &nbr);
@@ -899,8 +948,8 @@ static int write_frames(wg_run *run, hid_t f)
   if (pairs < 0 || !offset || !buf || !cnt) st = WG_EIO;
   long long row = 0;
   for (long k = 0; k < run->nframes && st == WG_OK; k++) {
-    long long step = k;
     double t = run->frame_time[k];
+    long long step = clock_step(clk, t);
     if (fread(buf, sizeof(double), (size_t)n * dim, in) != (size_t)n * dim) st = WG_EIO;
     if (st == WG_OK) st = wg_h5md_element_write(&pos, step, t, buf);
     if (st == WG_OK && fread(buf, sizeof(double), (size_t)n * dim, in) != (size_t)n * dim) st = WG_EIO;
@@ -926,8 +975,15 @@ static int write_frames(wg_run *run, hid_t f)
                      "snapshot k's bridges are rows offset[k] .. offset[k+1]-1 of pairs");
   hsize_t tdims[1] = {F};
   if (st == WG_OK)
-    st = wg_h5_write(f, "/bridges/time", H5T_NATIVE_DOUBLE, 1, tdims, run->frame_time, "sqrt(d/g)",
+    st = wg_h5_write(f, "/bridges/time", H5T_NATIVE_DOUBLE, 1, tdims, run->frame_time, "tau",
                      "time of each snapshot (as /particles/all/position/time)");
+  long long *steps = malloc(sizeof(long long) * (F ? F : 1));
+  if (!steps) st = WG_ENOMEM;
+  for (hsize_t k = 0; st == WG_OK && k < F; k++) steps[k] = clock_step(clk, run->frame_time[k]);
+  if (st == WG_OK)
+    st = wg_h5_write(f, "/bridges/step", H5T_NATIVE_LLONG, 1, tdims, steps, "1",
+                     "step of each snapshot (as /particles/all/position/step)");
+  free(steps);
   wg_h5md_element_close(&pos);
   wg_h5md_element_close(&vel);
   wg_h5md_element_close(&nbr);
@@ -970,6 +1026,53 @@ static int write_summary(wg_run *run, hid_t f)
   return st;
 }
 
+/* Floor and lid heights in the lab frame at every instant of the clock (the engines' own
+   wall law, wall.h: floor c = 0, lid c = height, both c + A sin(w t)). */
+static int write_walls(wg_run *run, hid_t f, const run_clock *clk)
+{
+  const wg_scene *sc = run->sc;
+  if (sc->container != WG_CONTAINER_SHAKER) return WG_OK;
+  double omega = sc->omega > 0 ? sc->omega : 1; /* as the engines: A = 0 then */
+  const wg_wall wall[2] = {{0.0, sc->amplitude, omega, +1}, {sc->height, sc->amplitude, omega, -1}};
+  const char *name[2] = {"floor", "lid"};
+  const char *desc[2] = {"height of the floor in the lab frame, A sin(omega t + phase)",
+                         "height of the lid in the lab frame, height + A sin(omega t + phase)"};
+  hsize_t n = clk->n;
+  double *z = malloc(sizeof(double) * (n ? n : 1));
+  long long *step = malloc(sizeof(long long) * (n ? n : 1));
+  int st = !z || !step ? wg_error(WG_ENOMEM, "run file", "no memory for the walls") : WG_OK;
+  for (hsize_t k = 0; st == WG_OK && k < n; k++) step[k] = (long long)k;
+  for (int w = 0; w < 2 && st == WG_OK; w++) {
+    char path[64], p[80];
+    snprintf(path, sizeof path, "/observables/walls/%s", name[w]);
+    for (hsize_t k = 0; k < n; k++) z[k] = wg_wall_position(&wall[w], clk->t[k]);
+    snprintf(p, sizeof p, "%s/value", path);
+    st |= wg_h5_write(f, p, H5T_NATIVE_DOUBLE, 1, &n, z, "d", desc[w]);
+    snprintf(p, sizeof p, "%s/time", path);
+    st |= wg_h5_write(f, p, H5T_NATIVE_DOUBLE, 1, &n, clk->t, "tau", columns[COL_TIME].description);
+    snprintf(p, sizeof p, "%s/step", path);
+    st |= wg_h5_write(f, p, H5T_NATIVE_LLONG, 1, &n, step, "1", WG_H5_STEP_MEANING);
+    st |= wg_h5_attr_double(f, path, "mean", wall[w].c);
+    st |= wg_h5_attr_double(f, path, "amplitude", sc->amplitude);
+    st |= wg_h5_attr_double(f, path, "omega", sc->omega);
+    st |= wg_h5_attr_double(f, path, "phase", 0.0);
+  }
+  free(z);
+  free(step);
+  return st;
+}
+
+/* The units module: wetgran's units are the mean diameter, the mass and sqrt(d/g). */
+static int write_units(hid_t f)
+{
+  const char *sym[3] = {"d", "m", "tau"};
+  const char *meaning[3] = {
+      "length: the mean particle diameter",
+      "mass: the mass of a particle of diameter d (every particle's mass with mass = unit)",
+      "time: sqrt(d/g), g the acceleration of gravity (also the unit of gravity = 1 when the scene has none)"};
+  return wg_h5md_units(f, "wetgran", 3, sym, meaning);
+}
+
 static int write_run_file(wg_run *run, double wall_s)
 {
   const wg_scene *sc = run->sc;
@@ -983,6 +1086,14 @@ static int write_run_file(wg_run *run, double wall_s)
   if (sc->container == WG_CONTAINER_SHAKER) bound[dim - 1] = "none";
   double edges[3] = {sc->lx, dim == 3 ? sc->ly : sc->height, sc->height};
   st |= wg_h5md_box(f, "all", dim, edges, bound);
+  st |= write_units(f);
+  st |= wg_h5_attr_string(f, "/particles/all/box", "z_frame",
+                          sc->container == WG_CONTAINER_SHAKER
+                              ? "positions are in the lab frame: the floor is at z = A sin(omega t) and the lid at "
+                                "z = height + A sin(omega t) (/observables/walls); the last edge is the "
+                                "floor-to-lid distance height"
+                              : "positions are in the box frame, every axis periodic: 0 <= x < edge");
+  st |= wg_h5_attr_string(f, "/particles/all", "step_meaning", WG_H5_STEP_MEANING);
   double *buf = malloc(sizeof(double) * (size_t)n), *dia = malloc(sizeof(double) * (size_t)n);
   if (!buf || !dia) st = WG_ENOMEM;
   hsize_t d1[1] = {(hsize_t)n};
@@ -993,10 +1104,27 @@ static int write_run_file(wg_run *run, double wall_s)
   }
   if (st == WG_OK) st = wg_h5_write(f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, 1, d1, dia, "d", "particle diameters");
   if (st == WG_OK) st = wg_h5_write(f, "/particles/all/mass", H5T_NATIVE_DOUBLE, 1, d1, buf, "m", "particle masses");
+  long long *id = malloc(sizeof(long long) * (size_t)n);
+  int *species = calloc((size_t)n, sizeof(int));
+  if (!id || !species) st = WG_ENOMEM;
+  for (long i = 0; st == WG_OK && i < n; i++) id[i] = i;
+  if (st == WG_OK)
+    st = wg_h5_write(f, "/particles/all/id", H5T_NATIVE_LLONG, 1, d1, id, "1",
+                     "particle identity: row i of every per-particle dataset is particle i");
+  if (st == WG_OK)
+    st = wg_h5_write(f, "/particles/all/species", H5T_NATIVE_INT, 1, d1, species, "1",
+                     "particle species: 0 for all (one granular material; sizes in diameter)");
+  free(id);
+  free(species);
   free(buf);
   free(dia);
-  if (st == WG_OK) st = write_frames(run, f);
-  if (st == WG_OK) st = write_series(run, f);
+  run_clock clk = {NULL, 0};
+  if (st == WG_OK) st = clock_build(run, &clk);
+  if (st == WG_OK) st = write_frames(run, f, &clk);
+  if (st == WG_OK) st = write_series(run, f, &clk);
+  if (st == WG_OK) st = write_walls(run, f, &clk);
+  if (st == WG_OK) st = wg_h5_attr_string(f, "/observables", "step_meaning", WG_H5_STEP_MEANING);
+  free(clk.t);
   if (st == WG_OK) st = write_profiles(run, f);
   if (st == WG_OK) st = write_parameters(run, f);
   if (st == WG_OK) st = write_provenance(run, f, wall_s);

@@ -1028,6 +1028,22 @@ void wg_scene_print_keys(FILE *out)
   }
 }
 
+wg_key_kind wg_scene_key_kind(const char *key)
+{
+  for (int k = 0; k < NKEYS; k++) {
+    if (strcmp(keys[k].name, key) != 0) continue;
+    switch (keys[k].type) {
+    case T_DOUBLE: return WG_KEY_REAL;
+    case T_LONG:
+    case T_INT: return WG_KEY_INT;
+    case T_SEED: return WG_KEY_UINT;
+    case T_ENUM:
+    case T_PATH: return WG_KEY_WORD;
+    }
+  }
+  return WG_KEY_REAL; /* the derived values (amplitude, omega, ...) */
+}
+
 int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user)
 {
   const struct { const char *name; double value; const char *unit, *desc; } derived[] = {

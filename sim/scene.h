@@ -104,4 +104,9 @@ typedef int (*wg_scene_visit_fn)(void *user, const char *key, const char *value,
                                  const char *unit, const char *description);
 int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user);
 
+/* How a visited key's value is stored in a run file's /parameters: a real (float64), an
+   integer (int64), the seed (uint64) or a word (string). */
+typedef enum { WG_KEY_REAL, WG_KEY_INT, WG_KEY_UINT, WG_KEY_WORD } wg_key_kind;
+wg_key_kind wg_scene_key_kind(const char *key);
+
 #endif

@@ -499,7 +499,7 @@ static void test_h5md(void)
   TH_CHECK(wg_h5_read(f, "/particles/all/position/time", H5T_NATIVE_DOUBLE, t2) == WG_OK && t2[0] == 0 &&
                t2[1] == 0.25 && t2[2] == 0.5,
            "times");
-  TH_CHECK(str_attr_is(f, "/particles/all/position/time", "unit", "sqrt(d/g)") &&
+  TH_CHECK(str_attr_is(f, "/particles/all/position/time", "unit", "tau") &&
                str_attr_is(f, "/particles/all/position/value", "unit", "d") &&
                str_attr_is(f, "/particles/all/position/value", "description", "Particle centres.") &&
                str_attr_is(f, "/particles/all/position/step", "unit", "1"),
@@ -507,6 +507,76 @@ static void test_h5md(void)
   TH_CHECK(wg_h5_dims(f, "/observables/energy/value", &rank, dims) == WG_OK && rank == 1 && dims[0] == 2 &&
                wg_h5_read(f, "/observables/energy/value", H5T_NATIVE_DOUBLE, en2) == WG_OK && en2[1] == -2.5,
            "scalar element value {2}");
+  TH_CHECK(H5Fget_obj_count(f, H5F_OBJ_ALL) == 1, "no object left open");
+  wg_h5_close(f);
+  remove(path);
+}
+
+/* ---- layout 2: typed parameters read like text ones, units module, layout version --------------- */
+
+static void test_layout2(void)
+{
+  const char *path = tmp("layout2.h5");
+  const char *sym[2] = {"d", "tau"}, *meaning[2] = {"length", "time"};
+  hid_t f = wg_h5_create(path), g, a, t;
+  double v = 0, one = 1;
+  long long layout = 0;
+  char err[512], buf[64];
+  capture c;
+  hsize_t n1 = 1;
+
+  TH_CHECK(wg_h5_layout(f) == 1, "a file without /h5md is layout 1");
+  TH_CHECK(wg_h5md_header(f, "A", "wetgran", "v") == WG_OK &&
+               wg_h5md_units(f, "wetgran", 2, sym, meaning) == WG_OK &&
+               wg_h5_write(f, "/x", H5T_NATIVE_DOUBLE, 1, &n1, &one, "m d+2 tau-2", "One.") == WG_OK,
+           "header, units module, a dataset");
+  g = wg_h5_group(f, "/parameters");
+  TH_CHECK(g >= 0 && wg_h5_attr_double(g, ".", "gamma", 20) == WG_OK &&
+               wg_h5_attr_llong(g, ".", "n", 1200) == WG_OK &&
+               wg_h5_attr_ullong(g, ".", "seed", 18446744073709551615ULL) == WG_OK &&
+               wg_h5_attr_string(g, ".", "old_gamma", "20") == WG_OK &&
+               wg_h5_attr_string(g, ".", "old_eps", "0.96") == WG_OK &&
+               wg_h5_attr_string(g, ".", "container", "shaker") == WG_OK &&
+               wg_h5_attr_string(g, ".", "trailing", "1.5x") == WG_OK,
+           "typed and text parameters written");
+  if (g >= 0) H5Gclose(g);
+  wg_h5_close(f);
+
+  f = wg_h5_open_read(path);
+  TH_CHECK(wg_h5_layout(f) == WG_H5_LAYOUT && WG_H5_LAYOUT == 2 &&
+               wg_h5_read_attr_llong(f, "/h5md/creator", "wetgran_layout", &layout) == WG_OK && layout == 2,
+           "layout %lld on /h5md/creator", layout);
+  TH_CHECK(wg_h5_read_param_double(f, "gamma", &v) == WG_OK && v == 20, "float64 parameter: %g", v);
+  TH_CHECK(wg_h5_read_param_double(f, "n", &v) == WG_OK && v == 1200, "int64 parameter: %g", v);
+  TH_CHECK(wg_h5_read_param_double(f, "seed", &v) == WG_OK && v == 18446744073709551615.0, "uint64 parameter: %g", v);
+  TH_CHECK(wg_h5_read_param_double(f, "old_gamma", &v) == WG_OK && v == 20 &&
+               wg_h5_read_param_double(f, "old_eps", &v) == WG_OK && v == 0.96,
+           "text parameters (layout 1) read as numbers");
+  capture_begin(&c);
+  int rc = wg_h5_read_param_double(f, "container", &v);
+  capture_end(&c, err, sizeof err);
+  TH_CHECK(rc == WG_EINVAL && strstr(err, "'container'") && strstr(err, "not a number"), "a word refused: %s", err);
+  capture_begin(&c);
+  rc = wg_h5_read_param_double(f, "trailing", &v);
+  capture_end(&c, err, sizeof err);
+  TH_CHECK(rc == WG_EINVAL && strstr(err, "'1.5x'"), "trailing text refused: %s", err);
+  capture_begin(&c);
+  rc = wg_h5_read_param_double(f, "nothing", &v);
+  capture_end(&c, err, sizeof err);
+  TH_CHECK(rc != WG_OK && strstr(err, "'nothing'"), "missing parameter named: %s", err);
+  a = H5Aopen_by_name(f, "/x", "unit", H5P_DEFAULT, H5P_DEFAULT);
+  t = H5Aget_type(a);
+  TH_CHECK(H5Tis_variable_str(t) > 0 && H5Tget_cset(t) == H5T_CSET_ASCII && str_attr_is(f, "/x", "unit", "m d+2 tau-2"),
+           "unit: variable-length ASCII string (units module)");
+  H5Tclose(t);
+  H5Aclose(a);
+  int version[2] = {0, 0};
+  a = H5Aopen_by_name(f, "/h5md/modules/units", "version", H5P_DEFAULT, H5P_DEFAULT);
+  TH_CHECK(H5Aread(a, H5T_NATIVE_INT, version) >= 0 && version[0] == 1 && version[1] == 0 &&
+               wg_h5_read_attr_string(f, "/h5md/modules/units", "system", buf, sizeof buf) == WG_OK &&
+               strcmp(buf, "wetgran") == 0 && str_attr_is(f, "/h5md/modules/units", "tau", "time"),
+           "units module: version {%d, %d}, system, symbols", version[0], version[1]);
+  H5Aclose(a);
   TH_CHECK(H5Fget_obj_count(f, H5F_OBJ_ALL) == 1, "no object left open");
   wg_h5_close(f);
   remove(path);
@@ -717,6 +787,7 @@ int main(void)
   test_rows();
   test_attributes();
   test_h5md();
+  test_layout2();
   test_empty();
   test_determinism();
   test_stamps_detectable();
