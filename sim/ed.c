@@ -543,6 +543,36 @@ static int physical_event(wg_ed *s, long i)
   }
 }
 
+static void set_check_at(wg_ed *s)
+{
+  s->check_at = s->watch && s->watch_at < s->sync_interval ? s->watch_at : s->sync_interval;
+}
+
+void wg_ed_set_watch(wg_ed *s, int (*watch)(void *user), void *user)
+{
+  s->watch = watch;
+  s->watch_user = user;
+  s->watch_at = s->since_sync + WG_ED_WATCH_EVENTS;
+  set_check_at(s);
+}
+
+/* The watch, when due, then the synchronisation, when due (exactly when it was due without a
+   watch: the watch never moves it). */
+static int tick(wg_ed *s)
+{
+  if (s->watch && s->since_sync >= s->watch_at) {
+    s->watch_at = s->since_sync + WG_ED_WATCH_EVENTS;
+    int st = s->watch(s->watch_user);
+    if (st != WG_OK) {
+      set_check_at(s);
+      return st;
+    }
+  }
+  if (s->since_sync >= s->sync_interval) return wg_ed_synchronize(s); /* sets check_at */
+  set_check_at(s);
+  return WG_OK;
+}
+
 int wg_ed_advance(wg_ed *s, double t_stop)
 {
   for (;;) {
@@ -568,8 +598,8 @@ int wg_ed_advance(wg_ed *s, double t_stop)
       int st = physical_event(s, i);
       if (st != WG_OK) return st;
     }
-    if (++s->since_sync >= s->sync_interval) {
-      int st = wg_ed_synchronize(s);
+    if (++s->since_sync >= s->check_at) {
+      int st = tick(s);
       if (st != WG_OK) return st;
     }
   }
@@ -662,7 +692,9 @@ int wg_ed_synchronize(wg_ed *s)
   for (long i = 0; i < s->n; i++)
     s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
   wg_evqueue_build(&s->queue);
+  s->watch_at = s->watch_at > s->since_sync ? s->watch_at - s->since_sync : 0;
   s->since_sync = 0;
+  set_check_at(s);
   return WG_OK;
 }
 
@@ -755,6 +787,7 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
   }
   for (long i = 0; i < n; i++) s->id[i] = s->slot[i] = (int32_t)i;
   s->sync_interval = 16ULL * (unsigned long long)n;
+  s->check_at = s->sync_interval;
   if (s->t_last)
     for (long i = 0; i < n; i++) s->t_last[i] = -INFINITY;
   s->cells.head = NULL;

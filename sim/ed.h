@@ -95,6 +95,12 @@ typedef struct wg_ed {
   double burst_start;               /* time of the burst's first event */
   unsigned long long since_sync;    /* events since the last synchronisation */
   unsigned long long sync_interval; /* synchronise (and renumber) after this many events */
+  /* the observer of wg_ed_set_watch(); check_at = min(sync_interval, watch_at) keeps the event
+     loop at one comparison per event for both */
+  int (*watch)(void *user);
+  void *watch_user;
+  unsigned long long watch_at;      /* since_sync at which the watch is next called */
+  unsigned long long check_at;
 } wg_ed;
 
 /* Set up from a finished scene: allocate, place particles on a lattice with Gaussian
@@ -117,6 +123,13 @@ int wg_ed_start(wg_ed *s, double t0);
 
 /* Process events until the next one would lie beyond t_stop; then now = t_stop. */
 int wg_ed_advance(wg_ed *s, double t_stop);
+
+/* Have wg_ed_advance() call watch(user) every WG_ED_WATCH_EVENTS events (cell crossings
+   included), e.g. to report progress or notice a run that stalls between two sampling times.
+   The watch may read the state (counts, now) but must not change it; a return other than
+   WG_OK stops the advance with that status.  NULL removes it. */
+enum { WG_ED_WATCH_EVENTS = 65536 };
+void wg_ed_set_watch(wg_ed *s, int (*watch)(void *user), void *user);
 
 /* Bring every particle to time now, wrap positions into the box, renumber the slots in cell
    order, rebuild the cells and predict every event afresh.  The state after this depends

@@ -15,7 +15,8 @@ typedef struct wg_run_options {
   const char *scene_text;    /* contents of the scene file, recorded in /provenance */
   int fresh;                 /* ignore an existing checkpoint */
   int no_volatile;           /* write zeros / empty strings in /provenance/volatile */
-  int progress;              /* progress line on stderr (a terminal) */
+  int progress;              /* progress line on stderr (a terminal), redrawn once a second */
+  double log_every;          /* > 0: a progress line every log_every s of wall time (a batch log) */
   int abort_after_checkpoint;/* testing aid: exit right after writing this many checkpoints */
 } wg_run_options;
 
@@ -25,6 +26,18 @@ typedef struct wg_profile {
   long samples;
   double *count, *volume, *mass, *mom, *mv2, *bridges; /* mom: bins x 3 */
 } wg_profile;
+
+/* What the user sees while a run goes on: the progress line, the batch log, the stall watch.
+   Wall-clock bookkeeping only: nothing here touches the engines' state. */
+typedef struct wg_run_watch {
+  double wall0, t0;          /* wall clock and simulated time when this process started */
+  double line_wall;          /* last terminal progress line */
+  int line_shown;            /* a terminal line is on screen without its newline */
+  double log_wall, log_t, log_work; /* last batch-log line: when, at what time, work done */
+  double stall_wall, stall_t;       /* the stall watch's window: start ... */
+  unsigned long long stall_events;  /* ... and physical events then */
+  int stall_warned;
+} wg_run_watch;
 
 typedef struct wg_run {
   wg_scene *sc;
@@ -46,6 +59,7 @@ typedef struct wg_run {
   long long k_series, k_snapshot, k_profile, k_checkpoint;
   double wall_start, wall_resumed; /* wall-clock bookkeeping (volatile) */
   int resumed;
+  wg_run_watch watch;
   char tmp_path[4096], ckpt_path[4096], frames_path[4096];
 } wg_run;
 

@@ -59,13 +59,14 @@ typedef struct {
   const char *const *words;  /* T_ENUM: NULL-terminated */
   int group, alt;
   int only;                  /* ONLY_ED / ONLY_TD: a key of one engine (0: both) */
+  int advisory;              /* 1: changes what a run reports, never its numbers */
 } key_desc;
 
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
-  K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT,
+  K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT, K_STALL_RATE, K_STALL_ACTION,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
   K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, K_INTEGRATOR, K_MU, K_MU_WALL, K_KT_RATIO,
   K_GT_RATIO, K_MU_ROLL, NKEYS
@@ -78,6 +79,7 @@ static const char *const init_words[] = {"lattice", "packed", NULL};
 static const char *const contact_words[] = {"linear", "hertz", NULL};
 static const char *const bridge_law_words[] = {"constant", "willett", NULL};
 static const char *const integrator_words[] = {"verlet", "gear", NULL};
+static const char *const stall_words[] = {"warn", "stop", NULL};
 
 #define OFF(field) offsetof(wg_scene, field)
 #define INF INFINITY
@@ -183,6 +185,14 @@ static const key_desc keys[NKEYS] = {
   [K_DT_CHECKPOINT] = {"dt_checkpoint", T_DOUBLE, OFF(dt_checkpoint), 0, INF, MAX_EXCL,
                        DEF_COND, 0, "t_end/10", "sqrt(d/g)",
                        "checkpoint interval; 0 = no checkpoints", NULL, 0, 0},
+  [K_STALL_RATE] = {"stall_rate", T_DOUBLE, OFF(stall_rate), 0, INF, MAX_EXCL, DEF_VALUE, 1000,
+                    NULL, "sqrt(g/d)",
+                    "stall watch: physical events per particle and unit time above which the "
+                    "run warns (once) that it crawls (the thesis's systems: 1.4 to 150); 0 = "
+                    "never", NULL, 0, 0, ONLY_ED, 1},
+  [K_STALL_ACTION] = {"stall_action", T_ENUM, OFF(stall_action), 0, 1, 0, DEF_VALUE,
+                      WG_STALL_WARN, NULL, "", "what the stall watch does: warn and go on, or stop the run "
+                      "(error, no run file)", stall_words, 0, 0, ONLY_ED, 1},
   /* time-driven engine (engine = td) */
   [K_CONTACT] = {"contact", T_ENUM, OFF(contact_law), 0, 1, 0, DEF_VALUE, 0, NULL, "",
                  "normal contact law: linear spring-dashpot (restitution eps) or Hertz "
@@ -1009,6 +1019,12 @@ static void format_allowed(int k, char *buf, size_t size)
   else if (keys[k].type == T_SEED) snprintf(buf, size, "[0, 2^64)");
   else if (keys[k].type == T_PATH) snprintf(buf, size, "a file");
   else format_range(&keys[k], buf, size);
+}
+
+int wg_scene_key_is_advisory(const char *name)
+{
+  int k = find_key(name);
+  return k >= 0 && keys[k].advisory;
 }
 
 void wg_scene_print_keys(FILE *out)

@@ -10,6 +10,7 @@
 
 typedef enum { WG_ENGINE_ED = 0, WG_ENGINE_TD = 1 } wg_engine_kind;
 typedef enum { WG_CONTAINER_SHAKER = 0, WG_CONTAINER_PERIODIC = 1 } wg_container_kind;
+typedef enum { WG_STALL_WARN = 0, WG_STALL_STOP = 1 } wg_stall_action;
 
 /* All lengths in mean diameters d, masses in m, times in sqrt(d/g), energies in m g d. */
 typedef struct wg_scene {
@@ -46,6 +47,9 @@ typedef struct wg_scene {
   double profile_start;/* profile_start: time from which profiles are averaged (default t_end/2) */
   double dt_profile;   /* dt_profile: sampling interval of profiles (default dt_series) */
   double dt_checkpoint;/* dt_checkpoint: checkpoint interval, 0 = none (default t_end/10) */
+  double stall_rate;   /* stall_rate: physical events per particle and unit time above which an
+                          event-driven run warns that it crawls; 0 = never (default 1000) */
+  int stall_action;    /* stall_action = warn | stop (WG_STALL_WARN / WG_STALL_STOP) */
 
   /* time-driven engine (engine = td) */
   int contact_law;     /* contact = linear | hertz (WG_CONTACT_LINEAR / _HERTZ, contact.h) */
@@ -94,6 +98,10 @@ int wg_scene_finish(wg_scene *sc);
 
 /* Mean of Willett's force profile 1 / (1 + 1.05 x + 2.5 x^2) (Eq. 2.9) over 0 <= x <= x_c. */
 double wg_willett_mean(double x_c);
+
+/* 1 if the key only changes what a run reports (stall_rate, stall_action), never a number it
+   computes: a checkpoint made with another value still resumes. */
+int wg_scene_key_is_advisory(const char *name);
 
 /* Print the table of keys (name, unit, default, description) for --help. */
 void wg_scene_print_keys(FILE *out);

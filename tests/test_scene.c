@@ -128,6 +128,12 @@ static void test_good_scene(void)
   TH_CHECK(sc.gravity == 1 && sc.tc == 1e-5 && sc.tg_init == 20 && sc.dt_snapshot == 0 &&
                sc.profile_bins == 0,
            "fixed and conditional defaults (gravity 1, tc 1e-5, tg_init 20)");
+  TH_CHECK(sc.stall_rate == 1000 && sc.stall_action == WG_STALL_WARN,
+           "stall watch defaults: stall_rate 1000, stall_action warn");
+  TH_CHECK(wg_scene_key_is_advisory("stall_rate") && wg_scene_key_is_advisory("stall_action") &&
+               !wg_scene_key_is_advisory("gamma") && !wg_scene_key_is_advisory("tc") &&
+               !wg_scene_key_is_advisory("no_such_key"),
+           "advisory keys (not in a checkpoint's fingerprint): stall_rate, stall_action only");
   TH_CLOSE("tg_init_abs = 20 E_cb", sc.tg_init_abs, 20 * ecb, 1e-14, 0);
   TH_CHECK(sc.dt_series == 0.1 && sc.profile_start == 50 && sc.dt_profile == 0.1 &&
                sc.dt_checkpoint == 10,
@@ -277,11 +283,11 @@ static void test_visit_and_help(void)
   int rc = load_variant(&sc, NULL, 0);
 
   rc = rc ? rc : wg_scene_visit(&sc, record, &log);
-  TH_CHECK(rc == WG_OK && log.count == 34 + 3 && strcmp(log.last, "t_driv") == 0,
-           "visit: 34 keys (the event-driven engine's) then 3 derived entries (count %d, last %s)",
+  TH_CHECK(rc == WG_OK && log.count == 36 + 3 && strcmp(log.last, "t_driv") == 0,
+           "visit: 36 keys (the event-driven engine's) then 3 derived entries (count %d, last %s)",
            log.count, log.last);
   {
-    /* the time-driven engine: its 15 keys instead of the 2 event-driven ones, and dt;
+    /* the time-driven engine: its 15 keys instead of the 4 event-driven ones, and dt;
        with contact = hertz also Hertz's K */
     wg_scene td = sc;
     visit_log lt = {0};
@@ -290,7 +296,7 @@ static void test_visit_and_help(void)
     r2 = r2 ? r2 : wg_scene_set_override(&td, "grazing_angle=");
     r2 = r2 ? r2 : wg_scene_finish(&td);
     r2 = r2 ? r2 : wg_scene_visit(&td, record, &lt);
-    TH_CHECK(r2 == WG_OK && lt.count == 34 - 2 + 15 + 3 + 1 && strcmp(lt.last, "dt") == 0,
+    TH_CHECK(r2 == WG_OK && lt.count == 36 - 4 + 15 + 3 + 1 && strcmp(lt.last, "dt") == 0,
              "visit, engine = td: 47 keys then 4 derived entries (count %d, last %s)", lt.count, lt.last);
     TH_CLOSE("engine = td: dt = t_contact / steps_per_contact", td.dt, 0.005 / 50, 1e-12, 0);
   }
@@ -326,6 +332,10 @@ static const bad_case bad_cases[] = {
   {"not an integer", {{2, "dim = two"}}, 1, ":2", "dim", NULL, "is not an integer"},
   {"out of range", {{9, "eps = 1.5"}}, 1, ":9", "eps", NULL, "out of range (0, 1]"},
   {"bad enum", {{APPEND, "container = box"}}, 1, ":16", "container", NULL, "shaker, periodic"},
+  {"bad stall_action", {{APPEND, "stall_action = halt"}}, 1, ":16", "stall_action", NULL,
+   "warn, stop"},
+  {"negative stall_rate", {{APPEND, "stall_rate = -1"}}, 1, ":16", "stall_rate", NULL,
+   "out of range [0, inf)"},
   {"duplicate key", {{APPEND, "eps = 0.9"}}, 1, ":9 and :16", "eps", NULL, "twice"},
   {"missing '='", {{11, "gamma 15"}}, 1, ":11", "gamma", NULL, "missing '='"},
   {"missing required key", {{13, "# no seed"}}, 1, NULL, "seed", NULL, "required key missing"},
