@@ -352,6 +352,8 @@ static int reduce_bridges(hid_t src, hid_t dst, const hsize_t *rows, hsize_t n)
     }
     rc = copy_rows(sg, dg, "pairs", prow, total);
     if (rc == WG_OK) rc = copy_rows(sg, dg, "time", rows, n);
+    if (rc == WG_OK && H5Lexists(sg, "step", H5P_DEFAULT) > 0) /* layout 2 */
+      rc = copy_rows(sg, dg, "step", rows, n);
     if (rc == WG_OK) {
       /* the offsets are recomputed: written with the source's type and attributes */
       hid_t d = H5Dopen2(sg, "offset", H5P_DEFAULT), t = H5Dget_type(d);
