@@ -47,12 +47,11 @@ static void usage(FILE *out)
 /* E_cb from the run's parameters; 0 if the run has none (dry) or it cannot be read. */
 static double run_e_cb(hid_t f)
 {
-  char buf[64], *end;
+  double e = 0;
   if (H5Aexists_by_name(f, "/parameters", "e_cb", H5P_DEFAULT) <= 0 ||
-      wg_h5_read_attr_string(f, "/parameters", "e_cb", buf, sizeof buf) != WG_OK)
+      wg_h5_read_param_double(f, "e_cb", &e) != WG_OK)
     return 0;
-  double e = strtod(buf, &end);
-  return end != buf && e > 0 && isfinite(e) ? e : 0;
+  return e > 0 && isfinite(e) ? e : 0;
 }
 
 static int present(hid_t f, const char *name, double e_cb)
