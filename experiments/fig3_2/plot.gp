@@ -14,6 +14,8 @@ wrap(x) = x - L * floor(x / L)
 tsnap = system(sprintf("awk 'NR == 1 && $2 == \"time\" { print $3 } { exit }' %s", snap))
 band = sprintf("mean of %d seeds %s s.e.", nseeds, nseeds > 1 ? "{/Symbol \261}" : "")
 if (nseeds == 1) band = "one seed"
+# room above the density's peak for the key
+stats mean using ($2 + $3) nooutput; dmax = STATS_max
 W = 1400.0; Hpx = 800.0
 left = 0.08; right = 0.92
 # the strip's height in screen units for the box's true 9 : 400
@@ -42,6 +44,7 @@ do for [k = 1:2] {
   set ylabel "T_g / E_{cb}" textcolor rgb "#c02020"
   set y2label "number density  n d" textcolor rgb "black"
   set logscale y; set autoscale y; set ytics nomirror tc rgb "#c02020"; set y2tics
+  set y2range [0:dmax * 1.15]
   set key default; set key inside top left horizontal box opaque samplen 2 width 1 maxrows 2
   set style fill transparent solid 0.25 noborder
   plot mean using 1:($8 - $9):($8 + $9) axes x1y1 with filledcurves lc rgb "#c02020" notitle, \
