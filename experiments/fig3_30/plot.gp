@@ -44,7 +44,7 @@ do for [k = 1:2] {
   set ytics; set yrange [0:nmax * 1.2]
   xa = 20
   set arrow 1 from xa, nmin to xa, nmax heads lw 2 lc rgb "black"
-  perseed = nseeds > 1 ? sprintf("%d seeds' own: %.2f {/Symbol \261} %.2f", nseeds, dn, real(dne)) : sprintf("the seed's own: %.2f", dn)
+  perseed = nseeds > 1 ? sprintf("per seed, mean of %d: %.2f {/Symbol \261} %.2f", nseeds, dn, real(dne)) : sprintf("one seed: %.2f", dn)
   set label 4 sprintf("{/Symbol D}n_{cb} d = %.2f  (Eq. 3.3, mean profile)\n%s", nmax - nmin, perseed) at xa + 5, (nmax + nmin) / 2
   set key default; set key inside top right box opaque samplen 2 width 1
   set style fill transparent solid 0.3 noborder
