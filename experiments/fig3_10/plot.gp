@@ -37,7 +37,7 @@ do for [k = 1:2] {
   set key top right
   set title "(b) density contrast across the band (Eq. 3.3)"
   plot for [g in system("awk -F'\t' 'NR > 1 { print $2 }' ".op." | sort -gu | tr '\\n' ' '")] \
-         op using (column(2) == real(g) ? column("amp") : 1/0):16 every ::1 smooth unique with linespoints pt 7 lw 2 title sprintf("{/Symbol G} = %s", g), \
+         op using (column(2) == real(g) ? column(19) : 1/0):16 every ::1 smooth unique with linespoints pt 7 lw 2 title sprintf("{/Symbol G} = %s", g), \
        0.29 title "thesis max at {/Symbol G} = 10 (Fig. 3.25)" with lines dt 2 lc rgb "black"
   unset multiplot
 }

@@ -11,6 +11,8 @@ xmin = STATS_min_x; xmax = STATS_max_x; ymin = STATS_min_y; ymax = STATS_max_y
 stats td using 3:2 every ::1 nooutput
 xmin = (STATS_min_x < xmin ? STATS_min_x : xmin) / 1.3; xmax = (STATS_max_x > xmax ? STATS_max_x : xmax) * 1.3
 ymin = (STATS_min_y < ymin ? STATS_min_y : ymin) / 1.12; ymax = (STATS_max_y > ymax ? STATS_max_y : ymax) * 1.8
+# Tables read by column name need no `every ::1`: naming a column makes gnuplot take the header
+# line as titles, and `every ::1` then dropped the first data row.
 do for [k = 1:2] {
   reset
   if (k == 1) { set terminal pngcairo size 1000,820 font ",12"; set output png } \
@@ -35,5 +37,5 @@ do for [k = 1:2] {
        td using 3:2 every ::1 with points pt 6 ps 2.2 lc rgb "black" title "time-driven (fig3\\_3's runs; fill: phase)", \
        for [p in phases] NaN with boxes fs solid 1 border lc rgb "black" lc rgb color(p) title phase_name(p), \
        2 * x * ecb / scrit title "A = s_{crit}" with lines lw 2 lc rgb "black", \
-       eq using (column("estar")):(column("gamma_c_415")) every ::1 with lines lw 2 lc rgb "#c02020" title "Eq. 4.15 (solid-fluid)"
+       eq using (column("estar")):(column("gamma_c_415")) with lines lw 2 lc rgb "#c02020" title "Eq. 4.15 (solid-fluid)"
 }
