@@ -2,9 +2,10 @@
 # white; solid grey; sfc/sgc pale) on log E* and log Gamma axes (the thesis's "log/linear
 # scale"; a log Gamma axis keeps the rows Gamma = 1.2-3 of the bulge apart), the Delaunay boundary points, the
 # A = s_crit line (Gamma = 2 E* E_cb / (m g s_crit), from Eq. 2.18-2.19) and an arrow at the
-# fitted f-fgc transition.
-color(l) = l eq "s" ? 0x909090 : l eq "f" ? 0x3070d0 : l eq "g" ? 0xf0a030 : \
-           l eq "fgc" ? 0xffffff : l eq "sfc" ? 0xd0d0ff : l eq "sgc" ? 0xffe0c0 : 0xff0000
+# fitted f-fgc transition; a key box per phase drawn; panels (a) the diagram, (b) the line
+# against the time one watches (where the experiment measures it).
+load '../phase_key.gp'
+phases = phases_in(op, "18")
 fit_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc\" { print $2 }' %s", res)))
 hi_x = real(system(sprintf("awk '$1 == \"vertical_f_fgc_hi_gamma\" { v = $2 } END { print v + 0 }' %s", res)))
 # the bulge of the fgc-g line (keys fgc_g_bulge_*, where the experiment reports it)
@@ -26,16 +27,19 @@ do for [k = 1:2] {
   set logscale xy
   set xrange [xmin:xmax]; set yrange [ymin:ymax]
   set xtics (0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 1, 1.25, 1.5, 2, 3, 4, 5)
-  set ytics (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 15, 20, 30, 40, 50, 60, 80, 100)
+  set ytics (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 15, 20, 30, 40, 50, 60, 70, 80, 100)
   set xlabel "E^*"
   set ylabel "{/Symbol G}"
-  set key below box
   set tmargin 4
   set arrow 1 from fit_x, graph 1.09 to fit_x, graph 1.0 head filled lw 2 lc rgb "black"
-  set label 1 sprintf("f-fgc: E* = %.3g ", fit_x) at fit_x, graph 1.06 right
+  # the two labels point away from each other, whichever line lies left
+  hi_left = hi_x > 0 && hi_x < fit_x
+  if (hi_left) { set label 1 sprintf(" f-fgc: E* = %.3g", fit_x) at fit_x, graph 1.06 left } \
+  else { set label 1 sprintf("f-fgc: E* = %.3g ", fit_x) at fit_x, graph 1.06 right }
   if (hi_x > 0) {
     set arrow 2 from hi_x, graph 1.09 to hi_x, graph 1.0 head filled lw 2 lc rgb "#3070d0"
-    set label 2 sprintf(" {/Symbol G} {/Symbol \263} 8: %.3g", hi_x) at hi_x, graph 1.06 left tc rgb "#3070d0"
+    if (hi_left) { set label 2 sprintf("{/Symbol G} {/Symbol \263} 8: %.3g ", hi_x) at hi_x, graph 1.06 right tc rgb "#3070d0" } \
+    else { set label 2 sprintf(" {/Symbol G} {/Symbol \263} 8: %.3g", hi_x) at hi_x, graph 1.06 left tc rgb "#3070d0" }
   }
   if (bulge_x > 0) {
     set style textbox opaque noborder
@@ -43,8 +47,11 @@ do for [k = 1:2] {
   }
   set samples 200
   if (strlen(waits) > 0) { set multiplot; set origin 0, 0; set size 0.75, 1 }
+  set key below box maxrows 3 width 1
+  if (strlen(waits) > 0) { set label 11 "(a)" at screen 0.01, screen 0.97 font ",14" }
   plot op using 3:2:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
-       op using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "runs (fill: phase; grey s, blue f, white fgc, orange g)", \
+       op using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" notitle, \
+       for [p in phases] NaN with boxes fs solid 1 border lc rgb "black" lc rgb color(p) title "run: ".phase_name(p), \
        bd using 1:2 every ::1 with points pt 7 ps 0.8 lc rgb "red" title "boundary (Delaunay midpoints)", \
        2 * x * ecb / scrit title "A = s_{crit}" with lines lw 2 lc rgb "black"
   if (strlen(waits) > 0) {
@@ -55,8 +62,10 @@ do for [k = 1:2] {
     set xtics auto; set ytics auto; set format x "10^{%T}"
     set xlabel "t_w [(d/g)^{1/2}]"; set ylabel "f-fgc E^*, {/Symbol G} {/Symbol \263} 8"
     set title "metastable fluid:\nthe line if runs stop at t_w"
-    set key inside bottom left nobox
-    plot 1.02 with lines lc rgb "grey" dt 2 title "thesis 1.02", \
+    unset key
+    set label 13 "thesis 1.02" at graph 0.97, first 1.02 right offset 0, -0.8 tc rgb "grey40"
+    set label 12 "(b)" at screen 0.76, screen 0.83 font ",14"
+    plot 1.02 with lines lc rgb "grey40" dt 2 notitle, \
          "<echo '".waits."'" using 1:2:3 with yerrorlines pt 7 lc rgb "#3070d0" notitle
     unset multiplot
   }

@@ -12,7 +12,7 @@ do for [k = 1:2] {
   set logscale xy
   set key top left
   set arrow 1 from xi, graph 0 to xi, graph 1 nohead dt 2 lw 2 lc rgb "#c02020"
-  set label 1 sprintf("inflection: E^* = %.2f {/Symbol \261} %.2f", xi, dxi) at xi, graph 0.92 offset 1, 0 textcolor rgb "#c02020"
+  set label 1 sprintf("inflection: E^* = %.2f {/Symbol \261} %.2f", xi, dxi) at xi, graph 0.92 right offset -1, 0 textcolor rgb "#c02020"
   plot op using 3:11:12 every ::1 with yerrorbars pt 7 ps 1.5 lc rgb "black" title "T_g / E_{cb} ({/Symbol G} = 2.7, {/Symbol e} = 0.8)", \
        op using 3:11 every ::1 with lines lc rgb "black" notitle
 }

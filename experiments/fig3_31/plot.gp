@@ -12,7 +12,7 @@ do for [k = 1:2] {
   set xlabel "E^*"
   set ylabel "{/Symbol D}n_{cb} d"
   set y2label "{/Symbol D}n_{area}" textcolor rgb "#c02020"
-  set ytics nomirror; set y2tics
+  set ytics nomirror; set y2tics textcolor rgb "#c02020"
   set key top right
   set samples 400
   plot op using 3:15 every ::1 with points pt 7 ps 1.5 lc rgb "black" title "{/Symbol D}n_{cb}", \

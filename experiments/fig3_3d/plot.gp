@@ -6,12 +6,12 @@ val(k) = real(system(sprintf("awk '$1 == \"%s\" { print $2 } END { if (!NR) prin
 x1 = val("f_fgc_eps1"); x2 = val("f_fgc_eps0.96")
 do for [k = 1:2] {
   reset
-  if (k == 1) { set terminal pngcairo size 1000,750 font ",12"; set output png } \
-  else { set terminal pdfcairo size 10in,7.5in font ",12"; set output pdf }
+  if (k == 1) { set terminal pngcairo size 1000,860 font ",12"; set output png } \
+  else { set terminal pdfcairo size 10in,8.6in font ",12"; set output pdf }
   set logscale xy
   set xlabel "E^*"
   set ylabel "T_g / E_{cb}"
-  set key top left opaque box font ",10"
+  set key below box font ",11" maxcols 1
   set title "3D, 3.24 spheres per d^2, {/Symbol G} = 30"
   set arrow 1 from x1, graph 0 to x1, graph 1 nohead lw 2 lc rgb "black"
   set arrow 2 from x2, graph 0 to x2, graph 1 nohead lw 2 lc rgb "red"

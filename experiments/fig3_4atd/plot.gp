@@ -1,8 +1,9 @@
 # Fig. 3.4a look, both engines: event-driven squares and time-driven circles filled by phase
 # (fluid blue, coexistence white, gas orange) on log E* and log Gamma axes (phase_diagram.gp), the A = s_crit line, Eq. 4.15
 # in red, and arrows at each engine's fitted f-fgc line.
-color(l) = l eq "s" ? 0x909090 : l eq "f" ? 0x3070d0 : l eq "g" ? 0xf0a030 : \
-           l eq "fgc" ? 0xffffff : l eq "sfc" ? 0xd0d0ff : l eq "sgc" ? 0xffe0c0 : 0xff0000
+# A key box per phase that either engine's runs show.
+load '../phase_key.gp'
+phases = phases_in(ed." ".td, "18")
 val(k) = real(system(sprintf("awk -F'\\t' '$1 == \"%s\" { print $2 }' %s", k, res)))
 xe = val("ed_vertical_f_fgc"); xt = val("td_vertical_f_fgc")
 stats ed using 3:2 every ::1 nooutput
@@ -10,6 +11,8 @@ xmin = STATS_min_x; xmax = STATS_max_x; ymin = STATS_min_y; ymax = STATS_max_y
 stats td using 3:2 every ::1 nooutput
 xmin = (STATS_min_x < xmin ? STATS_min_x : xmin) / 1.3; xmax = (STATS_max_x > xmax ? STATS_max_x : xmax) * 1.3
 ymin = (STATS_min_y < ymin ? STATS_min_y : ymin) / 1.12; ymax = (STATS_max_y > ymax ? STATS_max_y : ymax) * 1.8
+# Tables read by column name need no `every ::1`: naming a column makes gnuplot take the header
+# line as titles, and `every ::1` then dropped the first data row.
 do for [k = 1:2] {
   reset
   if (k == 1) { set terminal pngcairo size 1000,820 font ",12"; set output png } \
@@ -20,7 +23,7 @@ do for [k = 1:2] {
   set ytics (1, 1.2, 1.5, 2, 2.5, 3, 4, 5, 6, 8, 10, 15, 20, 30, 40, 50, 60, 80, 100)
   set xlabel "E^*"
   set ylabel "{/Symbol G}"
-  set key below maxrows 3 box
+  set key below maxrows 4 box width 1
   set arrow 1 from xe, graph 0.99 to xe, graph 0.93 head filled lw 2 lc rgb "black"
   set arrow 2 from xt, graph 0.99 to xt, graph 0.93 head filled lw 2 lc rgb "#606060"
   # the labels face away from each other: the smaller value's to the left of its arrow
@@ -29,9 +32,10 @@ do for [k = 1:2] {
   else { set label 1 sprintf("event-driven: %.3g", xe) at xe / 1.03, graph 0.96 right; \
          set label 2 sprintf("time-driven: %.3g", xt) at xt * 1.03, graph 0.96 left }
   plot ed using 3:2:(color(strcol(18))) every ::1 with points pt 5 ps 2.5 lc rgb variable notitle, \
-       ed using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "event-driven (fill: phase; grey s, blue f, white fgc, orange g)", \
+       ed using 3:2 every ::1 with points pt 4 ps 2.5 lc rgb "black" title "event-driven (fig3\\_4a's runs; fill: phase)", \
        td using 3:2:(color(strcol(18))) every ::1 with points pt 7 ps 2.2 lc rgb variable notitle, \
-       td using 3:2 every ::1 with points pt 6 ps 2.2 lc rgb "black" title "time-driven (fig3\\_3's runs)", \
+       td using 3:2 every ::1 with points pt 6 ps 2.2 lc rgb "black" title "time-driven (fig3\\_3's runs; fill: phase)", \
+       for [p in phases] NaN with boxes fs solid 1 border lc rgb "black" lc rgb color(p) title phase_name(p), \
        2 * x * ecb / scrit title "A = s_{crit}" with lines lw 2 lc rgb "black", \
-       eq using (column("estar")):(column("gamma_c_415")) every ::1 with lines lw 2 lc rgb "#c02020" title "Eq. 4.15 (solid-fluid)"
+       eq using (column("estar")):(column("gamma_c_415")) with lines lw 2 lc rgb "#c02020" title "Eq. 4.15 (solid-fluid)"
 }

@@ -1,6 +1,6 @@
-# Figs. 4.3 and 4.4 look.  Left (4.3): lateral diffusion coefficient D of each layer h = 1
+# Figs. 4.3 and 4.4 look.  Left, (a) (4.3): lateral diffusion coefficient D of each layer h = 1
 # (floor) ... 6 (surface) against Gamma, log scale, with the cut between solid and fluidized
-# layers.  Right (4.4): fluidization depth l_s against Gamma (circles), the fit
+# layers.  Right, (b) (4.4): fluidization depth l_s against Gamma (circles), the fit
 # l_s = l0 ln(1/(1 - (Gamma - Gamma_M)/(Gamma_C - Gamma_M))) (black, capped at M; dotted: l0
 # alone, Gamma_M and Gamma_C where the top layer melts and the whole bed is fluid), Eq. 4.11's
 # line (M - 1)(Gamma - Gamma_M)/(Gamma_C - Gamma_M) with the fitted Gamma_M, Gamma_C (red) and
@@ -22,9 +22,10 @@ do for [k = 1:2] {
   set ylabel "D  [d^2 / (d/g)^{1/2}]"
   set logscale y
   set format y "10^{%L}"
-  set key top left Left reverse samplen 2
+  # bottom right: the surface layer's curve runs through the top left
+  set key bottom right Left reverse samplen 2 opaque
   set offsets 0.05, 0.05, 0, 0
-  set title sprintf("Fig. 4.3: lateral diffusion per layer ({/Symbol w} = %g (g/d)^{1/2}, E^* = {/Symbol G}^2 (100/{/Symbol w}^2))", omega)
+  set title sprintf("(a) Fig. 4.3: lateral diffusion per layer ({/Symbol w} = %g (g/d)^{1/2}, E^* = {/Symbol G}^2 (100/{/Symbol w}^2))", omega)
   plot for [h = 1:M] lay index (h - 1) using 1:2:3 with yerrorlines lw 2 pt 7 ps 1.1 lc h title sprintf("h = %d", h), \
        cut with lines dt 2 lw 2 lc rgb "black" title sprintf("fluidized above %.2g", cut)
   unset logscale y
@@ -33,7 +34,7 @@ do for [k = 1:2] {
   set yrange [-0.3:M + 1.8]
   set samples 1000
   set key top left Left reverse samplen 2
-  set title "Fig. 4.4: fluidization depth"
+  set title "(b) Fig. 4.4: fluidization depth"
   plot dep using 1:2 every ::1 with points pt 6 ps 2 lw 2 lc rgb "black" title "simulation", \
        lsfit(x, l0, gm, gc) with lines lw 2 lc rgb "black" \
          title sprintf("fit: l_0 = %.2f {/Symbol \261} %.2f, {/Symbol G}_M = %.2f {/Symbol \261} %.2f, {/Symbol G}_C = %.2f {/Symbol \261} %.2f", l0, dl0, gm, dgm, gc, dgc), \
