@@ -3,6 +3,7 @@
 #   make demo       the main job: a small real figure (thesis Fig. 3.2, event-driven)
 #   make test       build and run the tests (SANITIZE=1: under ASan + UBSan)
 #   make bench      benchmarks (numbers go to tests/bench/out/)
+#   make docs-figures  the pictures of docs/ (docs/figures/<id>.png)
 # make, demo, test, bench and the figures first install the Debian packages they need
 # (scripts/install-deps.sh; nothing is done when all are there).
 
@@ -178,6 +179,13 @@ archive:
 
 # The main job: thesis Fig. 3.2 (event-driven curves) at CI scale.
 demo: fig3_2
+
+# The docs pages' pictures, docs/figures/<id>.png: every figure drawn from the run archive at
+# the thesis's scale where it is filed (nothing simulated), else at CI scale, and shrunk
+# (scripts/docs-figures; DOCS_FIGURES="fig3_2 fig4_1" for some only).
+.PHONY: docs-figures
+docs-figures: deps
+	./scripts/docs-figures $(DOCS_FIGURES)
 
 clean:
 	rm -rf build bin
