@@ -731,6 +731,12 @@ static int mode_strip(int nf, char **files, const options *o)
       rc = 1;
       break;
     }
+    agrow shape = measure_ag(fd);
+    if (strcmp(shape.shape, "II")) {
+      fprintf(stderr, PROG ": %s: no strip along x to trace (shape %s, not II)\n", fd->file, shape.shape);
+      rc = 1;
+      break;
+    }
     double ad, err;
     if ((rc = strip_amplitude(fd, &ad, &err))) break;
     /* N_p: particles in the dense cells; the fluid's n and n_cb per volume (height) */
