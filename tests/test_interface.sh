@@ -115,7 +115,7 @@ check "spacetime: densities average to N / L_x = 3 per snapshot" \
   bash -c "awk -F'\t' 'NF == 4 && \$1 != \"t\" { s[\$1] += \$3; n[\$1]++ } END { for (t in s) if ((s[t] / n[t] - 3) ^ 2 > 1e-9) bad++; exit bad > 0 }' '$tmp/st.map'"
 
 # (8) bad input: one line naming the file (and the dataset), exit 1; bad options exit 2
-"$WG_BIN/wetgran-run" "$WG_TESTS/../sim/scenes/shake2d.ini" n=50 lx=20 t_end=2 profile_bins=0 dt_series=1 dt_checkpoint=0 -q -o "$tmp/noprof.h5" 2> /dev/null
+"$WG_BIN/wetgran-run" "$WG_TESTS/../sim/scenes/shake2d.ini" n=50 lx=20 t_end=2 profile_bins=0 profile_start=0 dt_series=1 dt_checkpoint=0 -q -o "$tmp/noprof.h5" 2> /dev/null
 "$tool" ag --source profile "$tmp/noprof.h5" > /dev/null 2> "$tmp/e1"; rc=$?
 check "no profiles: exit 1, names the file and /observables/profiles/x" \
   bash -c "[ $rc -eq 1 ] && [ \$(wc -l < '$tmp/e1') -eq 1 ] && grep -q 'noprof.h5: no dataset /observables/profiles/x' '$tmp/e1'"
