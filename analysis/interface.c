@@ -55,6 +55,7 @@ typedef struct options {
   double sigma;           /* relax: interfacial energy for mu_f */
   double xmin, xmax;      /* powerfit range */
   const char *xcol, *ycol;
+  const char *h5;         /* ag: also write the table as HDF5 */
 } options;
 
 /* A coarse-grained lateral field of one run: nx * ny cells (ny = 1 for a 2D run, whose
@@ -109,6 +110,8 @@ static int usage(FILE *o, int rc)
     "  --t-fg X            fix the gas cut (T_g/E_cb, or density) instead of Otsu's\n"
     "  --t-sf X            solid below this T_g/E_cb (default 0.01)\n"
     "  --ends EF:EG        E*_f-fgc and E*_fgc-g: estar_tilde = (E* - EF)/(EG - EF)\n"
+    "  --h5 FILE          ag: also write the table to FILE (HDF5: /ag/<column>, one value\n"
+    "                      per run; /ag/file the run names; attribute threshold on /ag)\n"
     "  --fsmax F, --sigma S, --x COL, --y COL, --xmin X, --xmax X  (strip, relax, powerfit)\n"
     "Thresholds: Otsu's two-class cut of log10 of the field over the cells of every run given\n"
     "(a '# threshold' line gives it with the two classes' means; classes less than 0.3 decades\n"
@@ -574,22 +577,71 @@ static int load_all(int nf, char **files, const options *o, field **out, double 
   return 0;
 }
 
+/* The ag table as HDF5 (--h5): one dataset per column under /ag, written to FILE.tmp and
+   renamed when complete. */
+#define AG_COLS 8
+static int write_ag_h5(const char *path, int nf, char **files, double (*col)[AG_COLS],
+                       const char *const *shapes, double cut, const options *o)
+{
+  static const char *name[AG_COLS] = {"gamma", "estar", "estar_tilde", "a_g", "a_g_err", "n_gas", "n_dense", "r_eq"};
+  static const char *unit[AG_COLS] = {"1", "1", "1", "1", "1", "1", "1", "d"};
+  static const char *desc[AG_COLS] = {
+      "peak acceleration Gamma of the run", "driving energy E* of the run",
+      "(E* - E*_f-fgc) / (E*_fgc-g - E*_f-fgc) (--ends)", "gas fraction of the lateral plane",
+      "half the interface cells over all cells", "gas components (periodic boundaries)",
+      "dense (fluid or solid) components", "equivalent radius sqrt(A/pi) of the drop (shapes I, III)"};
+  char tmp[4096];
+  snprintf(tmp, sizeof tmp, "%s.tmp", path);
+  hid_t f = wg_h5_create(tmp);
+  if (f < 0) return 1;
+  double *v = malloc(sizeof(double) * nf);
+  int rc = !v;
+  hsize_t dims[1] = {(hsize_t)nf};
+  for (int c = 0; c < AG_COLS && !rc; c++) {
+    for (int r = 0; r < nf; r++) v[r] = col[r][c];
+    char p[64];
+    snprintf(p, sizeof p, "/ag/%s", name[c]);
+    rc = wg_h5_write(f, p, H5T_NATIVE_DOUBLE, 1, dims, v, unit[c], desc[c]) != WG_OK;
+  }
+  free(v);
+  if (!rc) rc = wg_h5_attr_strings(f, "/ag", "file", nf, (const char *const *)files) != WG_OK;
+  if (!rc) rc = wg_h5_attr_strings(f, "/ag", "shape", nf, shapes) != WG_OK;
+  if (!rc) rc = wg_h5_attr_double(f, "/ag", "threshold", pow(10, cut)) != WG_OK;
+  if (!rc) rc = wg_h5_attr_string(f, "/ag", "threshold_field", o->field == FIELD_TEMPERATURE ? "T_g/E_cb" : o->field == FIELD_DENSITY ? "number_density" : "bridge_density") != WG_OK;
+  if (wg_h5_close(f) != WG_OK) rc = 1;
+  if (!rc && rename(tmp, path) != 0) {
+    fprintf(stderr, PROG ": %s: cannot rename from %s\n", path, tmp);
+    rc = 1;
+  }
+  if (rc) remove(tmp);
+  return rc;
+}
+
 static int mode_ag(int nf, char **files, const options *o)
 {
   field *fds = NULL;
   double cut;
   int rc = load_all(nf, files, o, &fds, &cut);
+  double (*col)[AG_COLS] = malloc(sizeof *col * nf);
+  const char **shapes = malloc(sizeof *shapes * nf);
+  if (!col || !shapes) rc = 1;
   if (!rc) {
     printf("file\tgamma\testar\testar_tilde\ta_g\ta_g_err\tn_gas\tn_dense\tshape\tr_eq\tcells\n");
     for (int r = 0; r < nf; r++) {
       agrow a = measure_ag(&fds[r]);
       double et = isfinite(o->ef) ? (fds[r].estar - o->ef) / (o->eg - o->ef) : NAN;
+      double row[AG_COLS] = {fds[r].gamma, fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.r_eq};
+      memcpy(col[r], row, sizeof row);
+      shapes[r] = a.shape;
       printf("%s\t%.10g\t%.10g\t%.6g\t%.6g\t%.3g\t%d\t%d\t%s\t%.6g\t%dx%d\n", files[r], fds[r].gamma,
              fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.shape, a.r_eq, fds[r].nx, fds[r].ny);
     }
+    if (o->h5) rc = write_ag_h5(o->h5, nf, files, col, shapes, cut, o);
   }
   for (int r = 0; fds && r < nf; r++) field_free(&fds[r]);
   free(fds);
+  free(col);
+  free(shapes);
   return rc;
 }
 
@@ -999,7 +1051,7 @@ int main(int argc, char **argv)
   if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) return usage(stdout, 0);
   const char *mode = argv[1];
   options o = {FIELD_TEMPERATURE, SOURCE_AUTO, 0, 0, -INFINITY, INFINITY, NAN, T_SF_DEFAULT,
-               NAN, NAN, NAN, NAN, 0, 1, NULL, NULL};
+               NAN, NAN, NAN, NAN, 0, 1, NULL, NULL, NULL};
   char **files = malloc(sizeof(char *) * argc);
   int nf = 0;
   if (!files) return 1;
@@ -1048,6 +1100,7 @@ int main(int argc, char **argv)
     else if (!strcmp(a, "--sigma")) { if (wg_arg_double(a, v, &o.sigma)) return 2; }
     else if (!strcmp(a, "--xmin")) { if (wg_arg_double(a, v, &o.xmin)) return 2; }
     else if (!strcmp(a, "--xmax")) { if (wg_arg_double(a, v, &o.xmax)) return 2; }
+    else if (!strcmp(a, "--h5")) o.h5 = v;
     else if (!strcmp(a, "--x")) o.xcol = v;
     else if (!strcmp(a, "--y")) o.ycol = v;
     else if (!strcmp(a, "--ends")) {

@@ -38,6 +38,10 @@ check "--field density: the dilute class is the gas, a_g = 0.4" test "$(col a_g 
 check "--t-fg 100 (above every cell): a_g = 0, shape f" \
   test "$("$tool" ag --t-fg 100 "$tmp/p.h5" | awk -F'\t' '!/^#/ && $1 != "file" { print $5, $9 }')" = "0 f"
 
+"$tool" ag --h5 "$tmp/ag.h5" "$tmp/p.h5" "$tmp/pw.h5" > /dev/null
+check "--h5: /ag/a_g = [0.4, 0.4], run names and shapes as attributes, the threshold" \
+  bash -c "/usr/bin/python3 -c \"import h5py; f = h5py.File('$tmp/ag.h5', 'r'); g = f['ag']; assert list(g['a_g'][()]) == [0.4, 0.4]; assert [s.decode() for s in g.attrs['shape']] == ['plug', 'plug']; assert g.attrs['file'][1].decode().endswith('pw.h5'); assert abs(g.attrs['threshold'] - 12.247) < 0.01\" && [ ! -e '$tmp/ag.h5.tmp' ]"
+
 # (2) 2D snapshots: lx = 100, gas in [30, 70) on 40 cells: a_g = 0.4 from particles
 $synth snap2d "$tmp/s.h5"
 "$tool" ag --bins 40 "$tmp/s.h5" > "$tmp/s.out"
@@ -76,6 +80,10 @@ check "strip: sigma = N_p F_smax / ((2 pi)^2 A~_d) (Eq. 5.9)" \
   near "$(value sigma "$tmp/st.out")" "$(awk -v n="$np" -v a="$ad" 'BEGIN { print n * 0.01 / (4 * 3.14159265358979 ^ 2 * a) }')" 0.01
 check "strip: sigma/gamma = sigma pi / F_B (F_B = 4)" \
   near "$(value sigma_over_gamma "$tmp/st.out")" "$(awk -v s="$(value sigma "$tmp/st.out")" 'BEGIN { print s * 3.14159265358979 / 4 }')" 0.01
+# Eq. 5.10 from the fluid's densities: 3 bridge ends a particle (n_cb = 1.5 n), n = 4 / d^2 over
+# the height 8: (pi/6) n_cb s_crit n^(-1/3) = (pi/6) 0.75 0.0711 2^(1/3) = 0.0352
+check "strip: Eq. 5.10 estimate $(value eq5_10_sigma_over_gamma "$tmp/st.out") within 3 % of 0.0352" \
+  near "$(value eq5_10_sigma_over_gamma "$tmp/st.out")" 0.03519 0.001
 "$tool" strip --bins 48x48 "$tmp/st0.h5" > "$tmp/st0.out"
 check "strip across y = 0: A~_d = $(value ad_tilde "$tmp/st0.out") within 1/96 of 0.0625" \
   near "$(value ad_tilde "$tmp/st0.out")" 0.0625 0.0105
