@@ -1052,9 +1052,8 @@ int main(int argc, char **argv)
   const char *mode = argv[1];
   options o = {FIELD_TEMPERATURE, SOURCE_AUTO, 0, 0, -INFINITY, INFINITY, NAN, T_SF_DEFAULT,
                NAN, NAN, NAN, NAN, 0, 1, NULL, NULL, NULL};
-  char **files = malloc(sizeof(char *) * argc);
+  char *files[argc]; /* the inputs among the arguments: at most argc - 2 */
   int nf = 0;
-  if (!files) return 1;
   for (int i = 2; i < argc; i++) {
     const char *a = argv[i];
     const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -1143,6 +1142,5 @@ int main(int argc, char **argv)
     fprintf(stderr, PROG ": unknown mode '%s' (ag, field, strip, relax, spacetime, powerfit)\n", mode);
     rc = 2;
   }
-  free(files);
   return rc;
 }
