@@ -348,7 +348,11 @@ static int load_field(const char *file, const options *o, field *fd, long frame)
     }
     if (!rc) {
       hsize_t k0 = 0, k1 = s.frames;
-      if (frame >= 0) {
+      if (frame >= 0 && (hsize_t)frame >= s.frames) {
+        fprintf(stderr, PROG ": %s: /particles/all/position/value: no snapshot %ld (%llu snapshots)\n",
+                file, frame, (unsigned long long)s.frames);
+        rc = 1;
+      } else if (frame >= 0) {
         k0 = (hsize_t)frame;
         k1 = k0 + 1;
       } else {
@@ -356,7 +360,7 @@ static int load_field(const char *file, const options *o, field *fd, long frame)
         k1 = k0;
         while (k1 < s.frames && s.time[k1] <= o->t1) k1++;
       }
-      rc = read_snapshots(f, fd, &s, k0, k1);
+      if (!rc) rc = read_snapshots(f, fd, &s, k0, k1);
     }
     free(s.time);
     free(s.mass);

@@ -101,6 +101,11 @@ mu=$(sed -n 's/^# mu_f = .* = \([0-9.e+-]*\) +-.*/\1/p' "$tmp/r.out")
 check "relax: mu_f = 1 / ((2 pi)^2 sigma tau) (Eq. 5.13)" \
   near "$mu" "$(awk -v t="$tau" 'BEGIN { print 1 / (4 * 3.14159265358979 ^ 2 * 2 * t) }')" 1e-5
 
+$synth strip3d "$tmp/r4.h5" a=8 tau=50 frames=3
+"$tool" relax --bins 48x48 --t-fg 27 "$tmp"/r1.h5 "$tmp/r4.h5" > /dev/null 2> "$tmp/r.err"; rc=$?
+check "relax: a seed with fewer snapshots is refused, naming it and the dataset" \
+  bash -c "[ $rc -eq 1 ] && grep -q 'r4.h5: /particles/all/position/value: no snapshot 3 (3 snapshots)' '$tmp/r.err'"
+
 # (6) powerfit on y = 0.72 x^0.32 exactly, plus points outside (0, 1] that must be left out
 awk 'BEGIN { print "x\ty"; print "-0.2\t0"; print "1.2\t1"; for (i = 1; i <= 8; i++) { x = i / 8; printf "%g\t%.12g\n", x, 0.72 * x ^ 0.32 } }' > "$tmp/pow.tsv"
 "$tool" powerfit --x x --y y "$tmp/pow.tsv" > "$tmp/pow.out"
