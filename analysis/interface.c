@@ -49,6 +49,7 @@ typedef struct options {
   enum source_kind source;
   int nx, ny;             /* cells along x and y (snapshots); 0: default */
   double t0, t1;          /* averaging window (snapshots): from, to */
+  double window;          /* > 0: consecutive windows of this length within [t0, t1] */
   double t_fg, t_sf;      /* NAN: from the data */
   double ef, eg;          /* --ends: E*_f-fgc, E*_fgc-g; NAN: not given */
   double fsmax;           /* strip: maximum shear force F_smax [m g] */
@@ -64,6 +65,7 @@ typedef struct field {
   const char *file;
   int dim, nx, ny;
   double lx, ly, height, e_cb, s_crit, f_b, gamma, estar;
+  double t_from, t_to;  /* the times averaged over (profile: from its t_start, to NAN) */
   double *n;      /* particles per lateral area, d^-(D-1) */
   double *ncb;    /* bridges per lateral area */
   double *tg;     /* T_g [m g d]; NAN in a cell that never held a particle */
@@ -106,6 +108,9 @@ static int usage(FILE *o, int rc)
     "                      the default there) or its snapshots (default otherwise; 3D needs them)\n"
     "  --bins NX[xNY]      cells of the snapshot grid (default: about 4 d wide)\n"
     "  --from T, --to T    averaging window over snapshots (default: all snapshots)\n"
+    "  --window W          ag, field, strip: one row (set) per window [t, t + W) of snapshots\n"
+    "                      from --from on (one cut pooled over every window of every run);\n"
+    "                      columns t_from, t_to give the snapshots' times averaged over\n"
     "  --field temperature|density|bridges  the field the mask is cut on (default temperature)\n"
     "  --t-fg X            fix the gas cut (T_g/E_cb, or density) instead of Otsu's\n"
     "  --t-sf X            solid below this T_g/E_cb (default 0.01)\n"
@@ -180,6 +185,10 @@ static int read_profile(hid_t f, field *fd)
     return 1;
   for (int i = 0; i < fd->nx; i++)
     if (!(fd->n[i] > 0)) fd->tg[i] = NAN;
+  if (H5Aexists_by_name(f, "/observables/profiles", "t_start", H5P_DEFAULT) <= 0 ||
+      wg_h5_read_attr_double(f, "/observables/profiles", "t_start", &fd->t_from) != WG_OK)
+    fd->t_from = NAN;
+  fd->t_to = NAN;
   return 0;
 }
 
@@ -334,7 +343,7 @@ static int load_field(const char *file, const options *o, field *fd, long frame)
   int rc = run_head(f, fd);
   enum source_kind src = o->source;
   if (!rc && src == SOURCE_AUTO)
-    src = fd->dim == 2 && frame < 0 && wg_h5_exists(f, "/observables/profiles/number_density")
+    src = fd->dim == 2 && frame < 0 && !(o->window > 0) && wg_h5_exists(f, "/observables/profiles/number_density")
               ? SOURCE_PROFILE : SOURCE_SNAPSHOTS;
   if (!rc && src == SOURCE_PROFILE) {
     rc = read_profile(f, fd);
@@ -361,6 +370,10 @@ static int load_field(const char *file, const options *o, field *fd, long frame)
         while (k1 < s.frames && s.time[k1] <= o->t1) k1++;
       }
       if (!rc) rc = read_snapshots(f, fd, &s, k0, k1);
+      if (!rc) {
+        fd->t_from = s.time[k0];
+        fd->t_to = s.time[k1 - 1];
+      }
     }
     free(s.time);
     free(s.mass);
@@ -569,31 +582,89 @@ static agrow measure_ag(const field *fd)
   return a;
 }
 
-static int load_all(int nf, char **files, const options *o, field **out, double *cut)
+/* The snapshot times of a run (for --window). */
+static int run_times(const char *file, double **t, hsize_t *n)
 {
-  field *fds = calloc(nf, sizeof *fds);
-  if (!fds) return 1;
-  *out = fds;
-  for (int r = 0; r < nf; r++)
-    if (load_field(files[r], o, &fds[r], -1)) return 1;
-  if (pooled_cut(fds, nf, o, cut)) return 1;
-  for (int r = 0; r < nf; r++) make_mask(&fds[r], o, *cut);
+  hid_t f = wg_run_open(file);
+  if (f < 0) return 1;
+  snaps s = {0};
+  int rc = snaps_open(f, file, &s);
+  wg_h5_close(f);
+  free(s.mass);
+  *t = s.time;
+  *n = s.frames;
+  return rc;
+}
+
+/* The fields of every run (with --window: of every window of every run holding a snapshot),
+   masked with one cut pooled over all of them. */
+static int load_all(int nf, char **files, const options *o, field **out, int *nfd, double *cut)
+{
+  field *fds = NULL;
+  int n = 0, cap = 0;
+  *out = NULL;
+  *nfd = 0;
+  for (int r = 0; r < nf; r++) {
+    double lo = o->t0, hi = o->t1, step = INFINITY;
+    double *t = NULL;
+    hsize_t nt = 0;
+    if (o->window > 0) {
+      if (run_times(files[r], &t, &nt)) {
+        free(t);
+        return 1;
+      }
+      lo = fmax(o->t0, t[0]);
+      hi = fmin(o->t1, t[nt - 1]);
+      step = o->window;
+    }
+    for (double w = lo; w <= hi; w += step) {
+      options one = *o;
+      if (o->window > 0) {
+        one.t0 = w;
+        one.t1 = nextafter(w + step, -INFINITY); /* windows [w, w + step) */
+        int any = 0;
+        for (hsize_t k = 0; k < nt; k++) any |= t[k] >= one.t0 && t[k] <= one.t1;
+        if (!any) continue;
+      }
+      if (n == cap) {
+        cap = cap ? 2 * cap : 16;
+        field *g = realloc(fds, sizeof *fds * cap);
+        if (!g) {
+          free(t);
+          return 1;
+        }
+        fds = g;
+        *out = fds;
+      }
+      if (load_field(files[r], &one, &fds[n], -1)) {
+        free(t);
+        *nfd = n + 1;
+        return 1;
+      }
+      *nfd = ++n;
+      if (!(o->window > 0)) break;
+    }
+    free(t);
+  }
+  if (pooled_cut(fds, n, o, cut)) return 1;
+  for (int r = 0; r < n; r++) make_mask(&fds[r], o, *cut);
   return 0;
 }
 
 /* The ag table as HDF5 (--h5): one dataset per column under /ag, written to FILE.tmp and
    renamed when complete. */
-#define AG_COLS 8
-static int write_ag_h5(const char *path, int nf, char **files, double (*col)[AG_COLS],
+#define AG_COLS 10
+static int write_ag_h5(const char *path, int nf, const char **files, double (*col)[AG_COLS],
                        const char *const *shapes, double cut, const options *o)
 {
-  static const char *name[AG_COLS] = {"gamma", "estar", "estar_tilde", "a_g", "a_g_err", "n_gas", "n_dense", "r_eq"};
-  static const char *unit[AG_COLS] = {"1", "1", "1", "1", "1", "1", "1", "d"};
+  static const char *name[AG_COLS] = {"gamma", "estar", "estar_tilde", "a_g", "a_g_err", "n_gas", "n_dense", "r_eq", "t_from", "t_to"};
+  static const char *unit[AG_COLS] = {"1", "1", "1", "1", "1", "1", "1", "d", "tau", "tau"};
   static const char *desc[AG_COLS] = {
       "peak acceleration Gamma of the run", "driving energy E* of the run",
       "(E* - E*_f-fgc) / (E*_fgc-g - E*_f-fgc) (--ends)", "gas fraction of the lateral plane",
       "half the interface cells over all cells", "gas components (periodic boundaries)",
-      "dense (fluid or solid) components", "equivalent radius sqrt(A/pi) of the drop (shapes I, III)"};
+      "dense (fluid or solid) components", "equivalent radius sqrt(A/pi) of the drop (shapes I, III)",
+      "first time averaged over (profile: its t_start)", "last time averaged over (profile: nan)"};
   char tmp[4096];
   snprintf(tmp, sizeof tmp, "%s.tmp", path);
   hid_t f = wg_h5_create(tmp);
@@ -608,7 +679,7 @@ static int write_ag_h5(const char *path, int nf, char **files, double (*col)[AG_
     rc = wg_h5_write(f, p, H5T_NATIVE_DOUBLE, 1, dims, v, unit[c], desc[c]) != WG_OK;
   }
   free(v);
-  if (!rc) rc = wg_h5_attr_strings(f, "/ag", "file", nf, (const char *const *)files) != WG_OK;
+  if (!rc) rc = wg_h5_attr_strings(f, "/ag", "file", nf, files) != WG_OK;
   if (!rc) rc = wg_h5_attr_strings(f, "/ag", "shape", nf, shapes) != WG_OK;
   if (!rc) rc = wg_h5_attr_double(f, "/ag", "threshold", pow(10, cut)) != WG_OK;
   if (!rc) rc = wg_h5_attr_string(f, "/ag", "threshold_field", o->field == FIELD_TEMPERATURE ? "T_g/E_cb" : o->field == FIELD_DENSITY ? "number_density" : "bridge_density") != WG_OK;
@@ -625,27 +696,32 @@ static int mode_ag(int nf, char **files, const options *o)
 {
   field *fds = NULL;
   double cut;
-  int rc = load_all(nf, files, o, &fds, &cut);
-  double (*col)[AG_COLS] = malloc(sizeof *col * nf);
-  const char **shapes = malloc(sizeof *shapes * nf);
-  if (!col || !shapes) rc = 1;
+  int n = 0;
+  int rc = load_all(nf, files, o, &fds, &n, &cut);
+  double (*col)[AG_COLS] = malloc(sizeof *col * (n ? n : 1));
+  const char **shapes = malloc(sizeof *shapes * (n ? n : 1)), **names = malloc(sizeof *names * (n ? n : 1));
+  if (!col || !shapes || !names) rc = 1;
   if (!rc) {
-    printf("file\tgamma\testar\testar_tilde\ta_g\ta_g_err\tn_gas\tn_dense\tshape\tr_eq\tcells\n");
-    for (int r = 0; r < nf; r++) {
+    printf("file\tgamma\testar\testar_tilde\ta_g\ta_g_err\tn_gas\tn_dense\tshape\tr_eq\tcells\tt_from\tt_to\n");
+    for (int r = 0; r < n; r++) {
       agrow a = measure_ag(&fds[r]);
       double et = isfinite(o->ef) ? (fds[r].estar - o->ef) / (o->eg - o->ef) : NAN;
-      double row[AG_COLS] = {fds[r].gamma, fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.r_eq};
+      double row[AG_COLS] = {fds[r].gamma, fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.r_eq,
+                             fds[r].t_from, fds[r].t_to};
       memcpy(col[r], row, sizeof row);
       shapes[r] = a.shape;
-      printf("%s\t%.10g\t%.10g\t%.6g\t%.6g\t%.3g\t%d\t%d\t%s\t%.6g\t%dx%d\n", files[r], fds[r].gamma,
-             fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.shape, a.r_eq, fds[r].nx, fds[r].ny);
+      names[r] = fds[r].file;
+      printf("%s\t%.10g\t%.10g\t%.6g\t%.6g\t%.3g\t%d\t%d\t%s\t%.6g\t%dx%d\t%.10g\t%.10g\n", fds[r].file,
+             fds[r].gamma, fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.shape, a.r_eq, fds[r].nx,
+             fds[r].ny, fds[r].t_from, fds[r].t_to);
     }
-    if (o->h5) rc = write_ag_h5(o->h5, nf, files, col, shapes, cut, o);
+    if (o->h5) rc = write_ag_h5(o->h5, n, names, col, shapes, cut, o);
   }
-  for (int r = 0; fds && r < nf; r++) field_free(&fds[r]);
+  for (int r = 0; r < n; r++) field_free(&fds[r]);
   free(fds);
   free(col);
   free(shapes);
+  free(names);
   return rc;
 }
 
@@ -653,21 +729,22 @@ static int mode_field(int nf, char **files, const options *o)
 {
   field *fds = NULL;
   double cut;
-  int rc = load_all(nf, files, o, &fds, &cut);
+  int n = 0;
+  int rc = load_all(nf, files, o, &fds, &n, &cut);
   if (!rc) {
-    printf("file\tx\ty\tnumber_density\tbridge_density\ttemperature\ttemperature_ecb\tphase\n");
-    for (int r = 0; r < nf; r++) {
+    printf("file\tx\ty\tnumber_density\tbridge_density\ttemperature\ttemperature_ecb\tphase\tt_from\tt_to\n");
+    for (int r = 0; r < n; r++) {
       field *fd = &fds[r];
       for (int y = 0; y < fd->ny; y++)
         for (int x = 0; x < fd->nx; x++) {
           size_t j = (size_t)y * fd->nx + x;
-          printf("%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%c\n", files[r], (x + 0.5) * fd->lx / fd->nx,
+          printf("%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%c\t%.10g\t%.10g\n", fd->file, (x + 0.5) * fd->lx / fd->nx,
                  fd->ny > 1 ? (y + 0.5) * fd->ly / fd->ny : 0.0, fd->n[j], fd->ncb[j], fd->tg[j],
-                 fd->tg[j] / fd->e_cb, "gfs"[fd->phase[j]]);
+                 fd->tg[j] / fd->e_cb, "gfs"[fd->phase[j]], fd->t_from, fd->t_to);
         }
     }
   }
-  for (int r = 0; fds && r < nf; r++) field_free(&fds[r]);
+  for (int r = 0; r < n; r++) field_free(&fds[r]);
   free(fds);
   return rc;
 }
@@ -779,8 +856,9 @@ static int mode_strip(int nf, char **files, const options *o)
 {
   field *fds = NULL;
   double cut;
-  int rc = load_all(nf, files, o, &fds, &cut);
-  for (int r = 0; !rc && r < nf; r++) {
+  int n = 0;
+  int rc = load_all(nf, files, o, &fds, &n, &cut);
+  for (int r = 0; !rc && r < n; r++) {
     field *fd = &fds[r];
     if (fd->ny < 2) {
       fprintf(stderr, PROG ": %s: a strip needs a 2D lateral plane (a 3D run)\n", fd->file);
@@ -803,7 +881,7 @@ static int mode_strip(int nf, char **files, const options *o)
         ncb += fd->ncb[j] * cell;
         area += cell;
       }
-    printf("file\t%s\tnan\nkey\tvalue\terror\n", files[r]);
+    printf("file\t%s\tnan\nkey\tvalue\terror\nt_from\t%.10g\tnan\nt_to\t%.10g\tnan\n", fd->file, fd->t_from, fd->t_to);
     printf("ad_tilde\t%.6g\t%.3g\nn_p\t%.6g\tnan\n", ad, err, np);
     double h = fd->height > 0 ? fd->height : NAN;
     double nvol = np / (area * h), ncbvol = ncb / (area * h);
@@ -816,7 +894,7 @@ static int mode_strip(int nf, char **files, const options *o)
     /* Eq. 5.10 */
     printf("eq5_10_sigma_over_gamma\t%.6g\tnan\n", M_PI / 6 * ncbvol * fd->s_crit * pow(1 / nvol, 1.0 / 3));
   }
-  for (int r = 0; fds && r < nf; r++) field_free(&fds[r]);
+  for (int r = 0; r < n; r++) field_free(&fds[r]);
   free(fds);
   return rc;
 }
@@ -1054,8 +1132,9 @@ int main(int argc, char **argv)
   if (argc < 2) return usage(stderr, 2);
   if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) return usage(stdout, 0);
   const char *mode = argv[1];
-  options o = {FIELD_TEMPERATURE, SOURCE_AUTO, 0, 0, -INFINITY, INFINITY, NAN, T_SF_DEFAULT,
-               NAN, NAN, NAN, NAN, 0, 1, NULL, NULL, NULL};
+  options o = {.field = FIELD_TEMPERATURE, .source = SOURCE_AUTO, .t0 = -INFINITY, .t1 = INFINITY,
+               .window = 0, .t_fg = NAN, .t_sf = T_SF_DEFAULT, .ef = NAN, .eg = NAN, .fsmax = NAN,
+               .sigma = NAN, .xmin = 0, .xmax = 1};
   char *files[argc]; /* the inputs among the arguments: at most argc - 2 */
   int nf = 0;
   for (int i = 2; i < argc; i++) {
@@ -1097,6 +1176,13 @@ int main(int argc, char **argv)
       o.ny = (int)ny;
     } else if (!strcmp(a, "--from")) { if (wg_arg_double(a, v, &o.t0)) return 2; }
     else if (!strcmp(a, "--to")) { if (wg_arg_double(a, v, &o.t1)) return 2; }
+    else if (!strcmp(a, "--window")) {
+      if (wg_arg_double(a, v, &o.window)) return 2;
+      if (!(o.window > 0)) {
+        fprintf(stderr, PROG ": option --window: must be positive\n");
+        return 2;
+      }
+    }
     else if (!strcmp(a, "--t-fg")) { if (wg_arg_double(a, v, &o.t_fg)) return 2; }
     else if (!strcmp(a, "--t-sf")) { if (wg_arg_double(a, v, &o.t_sf)) return 2; }
     else if (!strcmp(a, "--fsmax")) { if (wg_arg_double(a, v, &o.fsmax)) return 2; }

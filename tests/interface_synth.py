@@ -6,8 +6,8 @@
 Kinds (positions and velocities written as wetgran-run's layout, enough for the tool):
   profile2d   a 2D run with only time-averaged profiles: 100 bins on lx = 100, T_g/E_cb = 50 in
               the gas bins [g0, g1) (default 20, 60; taken periodically), 3 elsewhere
-  snap2d      a 2D run with snapshots: lx = 100, particles 4 per d (fluid) or 1 per d (gas in
-              [g0, g1)), speeds ~ 1 (fluid) or 10 (gas), frames = 4
+  snap2d      a 2D run with snapshots: lx = 100, particles 16 per d (fluid) or 4 per d (gas in
+              [g0, g1 + grow k) in frame k, time 10 k), speeds ~ 1 (fluid) or 10 (gas), frames = 4
   disk3d      a 3D run, box L x L x 8 (L = 60): a disk of radius r (15) centred at (cx, cy)
               (default the corner 0, 0, so it is split over the periodic boundaries) in phase
               'inside' (gas) and the rest in the other phase
@@ -96,10 +96,16 @@ with h5py.File(out, "w") as f:
         pr.create_dataset("temperature", data=np.where(gas, 50.0, 3.0) * E_CB)
     elif kind == "snap2d":
         header(f, [100.0, 9.0], {})
-        g0, g1 = g("g0", 30), g("g1", 70)
+        g0, g1, grow = g("g0", 30), g("g1", 70), g("grow", 0)
         X, _ = lattice_2d(100.0, 1.0, 0.25)
-        gas = ((X - g0) % 100) < ((g1 - g0) % 100)
-        snapshots(f, layered(gas, X, X * 0, 9.0, 2, int(g("frames", 4))))
+        frames = []
+        for k in range(int(g("frames", 4))):
+            gas = ((X - g0) % 100) < ((g1 + grow * k - g0) % 100)
+            frames += layered(gas, X, X * 0, 9.0, 2, 1)
+        # equal particle numbers in every frame: the gas keeps every fourth site, so pad
+        n = max(len(fr[0]) for fr in frames)
+        snapshots(f, [(np.vstack([p, p[:n - len(p)]]), np.vstack([v, v[:n - len(p)]]),
+                       np.concatenate([b, b[:n - len(p)]])) for p, v, b in frames])
     elif kind == "disk3d":
         L = g("L", 60)
         header(f, [L, L, 8.0], {})

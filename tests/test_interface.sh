@@ -52,6 +52,15 @@ check "field: 40 cells, gas cells exactly those with 30 < x < 70" \
 check "field: fluid cells hold 16 particles per d (lattice 1/4 d), gas cells 4; n_cb 24 and 0" \
   bash -c "awk -F'\t' '!/^#/ && \$1 != \"file\" && !((\$8 == \"g\" && \$4 == 4 && \$5 == 0) || (\$8 == \"f\" && \$4 == 16 && \$5 == 24)) { bad++ } END { exit bad > 0 }' '$tmp/sf.out'"
 
+# --window: a gas stretch growing by 10 d a frame (frames every 10 t.u.): one row per window
+$synth snap2d "$tmp/grow.h5" grow=10
+"$tool" ag --bins 40 --window 10 "$tmp/grow.h5" > "$tmp/grow.out"
+check "--window 10: four windows, a_g = 0.4 0.5 0.6 0.7, t_from = 0 10 20 30" \
+  test "$(awk -F'\t' '!/^#/ && $1 != "file" { printf "%s/%s ", $5, $12 }' "$tmp/grow.out")" = "0.4/0 0.5/10 0.6/20 0.7/30 "
+"$tool" ag --bins 40 --window 20 --from 0 "$tmp/grow.h5" > "$tmp/grow2.out"
+check "--window 20: two windows of two snapshots each (t_from/t_to 0/10, 20/30)" \
+  test "$(awk -F'\t' '!/^#/ && $1 != "file" { printf "%s/%s ", $12, $13 }' "$tmp/grow2.out")" = "0/10 20/30 "
+
 # (3) 3D disks split over the periodic corner (centre 0, 0) on a 30 x 30 grid of 2 d cells:
 # gas disk r = 15 (a_g = pi 15^2 / 60^2 = 0.196, class I, r_eq 15); fluid disk r = 20 in the
 # middle (a_g = 1 - pi 20^2 / 60^2 = 0.651, class III, r_eq 20); within the cells' resolution
