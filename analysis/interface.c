@@ -90,8 +90,11 @@ static int usage(FILE *o, int rc)
     "  strip RUN.h5 ...    3D strip along x: both interfaces y(x) fitted with c + A cos(2 pi x/L_x)\n"
     "                      + B sin(..) (Eq. 5.4); rows key value error: ad_tilde (A~_d = A/L_x,\n"
     "                      mean of the two interfaces), n_p (particles in the fluid), with\n"
-    "                      --fsmax F: sigma = N_p F_smax / ((2 pi)^2 A~_d) (Eq. 5.9) [m g d^-1...],\n"
-    "                      sigma_over_gamma (gamma = F_B / (pi d)), and eq5_10_sigma_over_gamma\n"
+    "                      --fsmax F (F_smax [m g]): sigma = N_p F_smax / ((2 pi)^2 A~_d) (Eq. 5.9)\n"
+    "                      [m g: energy per length of the interface line on the lateral plane,\n"
+    "                      the thesis's normalisation], sigma_over_gamma (gamma = F_B / (pi d),\n"
+    "                      Eq. 2.8, so in units of d), sigma_area_over_gamma (sigma over the box\n"
+    "                      height: per area, comparable with Eq. 5.10), and eq5_10_sigma_over_gamma\n"
     "                      = (pi/6) n_cb d s_crit n^(-1/3) from the fluid's densities\n"
     "  relax RUN.h5 ...    seeds of one relaxation: A~_d per snapshot (field of that snapshot),\n"
     "                      averaged over the runs at equal times: rows t ad_tilde sd n; then\n"
@@ -890,6 +893,9 @@ static int mode_strip(int nf, char **files, const options *o)
       double sigma = np * o->fsmax / (4 * M_PI * M_PI * ad); /* Eq. 5.9 */
       printf("sigma\t%.6g\t%.3g\nsigma_over_gamma\t%.6g\t%.3g\n", sigma, sigma * err / fabs(ad),
              sigma / gamma_l, sigma / gamma_l * err / fabs(ad));
+      /* Eq. 5.9 balances the work against the extra length of the interface line; spread
+         over the height H of the box it is an energy per area, the quantity of Eq. 5.10 */
+      printf("sigma_area_over_gamma\t%.6g\t%.3g\n", sigma / (gamma_l * h), sigma / (gamma_l * h) * err / fabs(ad));
     }
     /* Eq. 5.10 */
     printf("eq5_10_sigma_over_gamma\t%.6g\tnan\n", M_PI / 6 * ncbvol * fd->s_crit * pow(1 / nvol, 1.0 / 3));

@@ -89,6 +89,8 @@ check "strip: sigma = N_p F_smax / ((2 pi)^2 A~_d) (Eq. 5.9)" \
   near "$(value sigma "$tmp/st.out")" "$(awk -v n="$np" -v a="$ad" 'BEGIN { print n * 0.01 / (4 * 3.14159265358979 ^ 2 * a) }')" 0.01
 check "strip: sigma/gamma = sigma pi / F_B (F_B = 4)" \
   near "$(value sigma_over_gamma "$tmp/st.out")" "$(awk -v s="$(value sigma "$tmp/st.out")" 'BEGIN { print s * 3.14159265358979 / 4 }')" 0.01
+check "strip: sigma_area_over_gamma = sigma_over_gamma / height (8)" \
+  near "$(value sigma_area_over_gamma "$tmp/st.out")" "$(awk -v s="$(value sigma_over_gamma "$tmp/st.out")" 'BEGIN { print s / 8 }')" 0.001
 # Eq. 5.10 from the fluid's densities: 3 bridge ends a particle (n_cb = 1.5 n), n = 4 / d^2 over
 # the height 8: (pi/6) n_cb s_crit n^(-1/3) = (pi/6) 0.75 0.0711 2^(1/3) = 0.0352
 check "strip: Eq. 5.10 estimate $(value eq5_10_sigma_over_gamma "$tmp/st.out") within 3 % of 0.0352" \
