@@ -1,0 +1,1242 @@
+/* wetgran-interface: the coexisting phases of shaken wet runs on the lateral plane (thesis
+   Ch. 5).  One tool with modes; each reads run files (or records of them) and writes a
+   tab-separated table to stdout.
+     ag         gas fraction a_g of each run (Fig. 5.2), its phase components counted with
+                periodic boundaries and, on a 2D lateral plane (3D runs), the shape class
+                I (gas drop), II (strip), III (fluid drop) with the drop's equivalent radius
+     field      the coarse-grained lateral field of one run: number density, bridge density,
+                T_g, and the phase mask
+     strip      the interfaces of a strip traced per column and fitted with a cosine (Eq. 5.4)
+                -> A~_d; N_p; sigma from Eq. 5.9 and sigma/gamma; the estimate of Eq. 5.10
+     relax      A~_d(t) of several seeds averaged per snapshot, exponential fit, mu_f (Eq. 5.13)
+     spacetime  number and bridge density along x against time, one row per (t, x) cell
+     powerfit   y = a x^beta fitted to two columns of a table (a_g = a E~*^beta, Fig. 5.2b)
+   The coarsening modes (droplet counts, crystalline domains, plug MSD) are to be added as
+   further modes sharing the field and the component labelling below.
+
+   The phase mask: a cell is gas where T_g / E_cb lies above t_fg, solid below t_sf, fluid in
+   between.  t_fg is Otsu's cut of log10(T_g / E_cb) over the cells of every run given (the
+   fluid and the gas of a coexisting run are more than a decade apart, cf. Fig. 3.2), unless
+   --t-fg fixes it; t_sf is orderparam's default 1e-2 (App. 3.A.1.1).  With --field density
+   (or bridges) the cut is Otsu's on log10 of the number (bridge) density and the gas is the
+   dilute class: number density alone cannot tell a homogeneous fluid from a homogeneous gas. */
+#include <gsl/gsl_blas.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_fit.h>
+#include <gsl/gsl_multifit.h>
+#include <gsl/gsl_multifit_nlinear.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "io_h5.h"
+#include "run_open.h"
+#include "wg_args.h"
+
+#define PROG "wetgran-interface"
+#define T_SF_DEFAULT 1e-2     /* orderparam's solid cut (T_g / E_cb) */
+#define MIN_SEPARATION 0.3    /* Otsu's classes closer than this (decades) are one phase */
+#define MAX_COLS 64
+
+enum field_kind { FIELD_TEMPERATURE, FIELD_DENSITY, FIELD_BRIDGES };
+enum source_kind { SOURCE_AUTO, SOURCE_PROFILE, SOURCE_SNAPSHOTS };
+enum phase { PH_GAS = 0, PH_FLUID = 1, PH_SOLID = 2 };
+
+typedef struct options {
+  enum field_kind field;
+  enum source_kind source;
+  int nx, ny;             /* cells along x and y (snapshots); 0: default */
+  double t0, t1;          /* averaging window (snapshots): from, to */
+  double window;          /* > 0: consecutive windows of this length within [t0, t1] */
+  double t_fg, t_sf;      /* NAN: from the data */
+  double ef, eg;          /* --ends: E*_f-fgc, E*_fgc-g; NAN: not given */
+  double fsmax;           /* strip: maximum shear force F_smax [m g] */
+  double sigma;           /* relax: interfacial energy for mu_f */
+  double xmin, xmax;      /* powerfit range */
+  const char *xcol, *ycol;
+  const char *h5;         /* ag: also write the table as HDF5 */
+} options;
+
+/* A coarse-grained lateral field of one run: nx * ny cells (ny = 1 for a 2D run, whose
+   lateral plane is the x axis).  Per cell, time averages. */
+typedef struct field {
+  const char *file;
+  int dim, nx, ny;
+  double lx, ly, height, e_cb, s_crit, f_b, gamma, estar;
+  double t_from, t_to;  /* the times averaged over (profile: from its t_start, to NAN) */
+  double *n;      /* particles per lateral area, d^-(D-1) */
+  double *ncb;    /* bridges per lateral area */
+  double *tg;     /* T_g [m g d]; NAN in a cell that never held a particle */
+  double n_per_cell_particles; /* mean particles per snapshot (N) */
+  unsigned char *phase;
+} field;
+
+static int usage(FILE *o, int rc)
+{
+  fprintf(o,
+    "Usage: " PROG " MODE [options] RUN.h5 ...\n"
+    "The coexisting phases of shaken wet runs on the lateral plane (thesis Ch. 5).\n"
+    "Modes:\n"
+    "  ag RUN.h5 ...       one row per run: gamma, estar, estar_tilde (with --ends), a_g (the\n"
+    "                      gas fraction of the lateral plane: of the box length x in 2D, of\n"
+    "                      the x-y area in 3D), its error (half the cells on an interface),\n"
+    "                      the gas and dense components (periodic boundaries), the shape:\n"
+    "                      f, g (one phase), plug (2D coexistence), I (gas drop), II (strip),\n"
+    "                      III (fluid drop), the drop's equivalent radius sqrt(A/pi) [d]\n"
+    "  field RUN.h5 ...    per cell of each run: file x [y] number_density bridge_density\n"
+    "                      temperature temperature_ecb phase (g f s)\n"
+    "  strip RUN.h5 ...    3D strip along x: both interfaces y(x) fitted with c + A cos(2 pi x/L_x)\n"
+    "                      + B sin(..) (Eq. 5.4); rows key value error: ad_tilde (A~_d = A/L_x,\n"
+    "                      mean of the two interfaces), n_p (particles in the fluid), with\n"
+    "                      --fsmax F (F_smax [m g]): sigma = N_p F_smax / ((2 pi)^2 A~_d) (Eq. 5.9)\n"
+    "                      [m g: energy per length of the interface line on the lateral plane,\n"
+    "                      the thesis's normalisation], sigma_over_gamma (gamma = F_B / (pi d),\n"
+    "                      Eq. 2.8, so in units of d), sigma_area_over_gamma (sigma over the box\n"
+    "                      height: per area, comparable with Eq. 5.10), and eq5_10_sigma_over_gamma\n"
+    "                      = (pi/6) n_cb d s_crit n^(-1/3) from the fluid's densities\n"
+    "  relax RUN.h5 ...    seeds of one relaxation: A~_d per snapshot (field of that snapshot),\n"
+    "                      averaged over the runs at equal times: rows t ad_tilde sd n; then\n"
+    "                      (comment lines) the fit A~_d = A0 exp(-t/tau) and, with --sigma S,\n"
+    "                      mu_f = 1 / ((2 pi)^2 S tau) (Eq. 5.13)\n"
+    "  spacetime RUN.h5    rows t x number_density bridge_density per snapshot and x cell\n"
+    "                      (gnuplot: plot F using 1:2:3 with image)\n"
+    "  powerfit --x COL --y COL TABLE\n"
+    "                      y = a x^beta (GSL Levenberg-Marquardt, start from the log-log line)\n"
+    "                      over xmin < x <= xmax (default 0 < x <= 1): rows key value error\n"
+    "                      a, beta, n (errors scaled by sqrt(chi^2/dof))\n"
+    "Options:\n"
+    "  --source profile|snapshots  the run's time-averaged profile (2D runs with profile_bins;\n"
+    "                      the default there) or its snapshots (default otherwise; 3D needs them)\n"
+    "  --bins NX[xNY]      cells of the snapshot grid (default: about 4 d wide)\n"
+    "  --from T, --to T    averaging window over snapshots (default: all snapshots)\n"
+    "  --window W          ag, field, strip: one row (set) per window [t, t + W) of snapshots\n"
+    "                      from --from on (one cut pooled over every window of every run);\n"
+    "                      columns t_from, t_to give the snapshots' times averaged over\n"
+    "  --field temperature|density|bridges  the field the mask is cut on (default temperature)\n"
+    "  --t-fg X            fix the gas cut (T_g/E_cb, or density) instead of Otsu's\n"
+    "  --t-sf X            solid below this T_g/E_cb (default 0.01)\n"
+    "  --ends EF:EG        E*_f-fgc and E*_fgc-g: estar_tilde = (E* - EF)/(EG - EF)\n"
+    "  --h5 FILE          ag: also write the table to FILE (HDF5: /ag/<column>, one value\n"
+    "                      per run; /ag/file the run names; attribute threshold on /ag)\n"
+    "  --fsmax F, --sigma S, --x COL, --y COL, --xmin X, --xmax X  (strip, relax, powerfit)\n"
+    "Thresholds: Otsu's two-class cut of log10 of the field over the cells of every run given\n"
+    "(a '# threshold' line gives it with the two classes' means; classes less than 0.3 decades\n"
+    "apart are one phase, and the cut is then refused unless --t-fg is given).\n"
+    "Errors name the file and the dataset; exit 1 (bad file), 2 (bad option).\n");
+  return rc;
+}
+
+/* ---- reading runs ------------------------------------------------------------------------ */
+
+static int need(hid_t f, const char *file, const char *path, const char *hint)
+{
+  if (wg_h5_exists(f, path)) return 0;
+  fprintf(stderr, PROG ": %s: no dataset %s%s%s\n", file, path, hint ? " " : "", hint ? hint : "");
+  return 1;
+}
+
+static int param(hid_t f, const char *file, const char *key, double *v, int required)
+{
+  if (H5Aexists_by_name(f, "/parameters", key, H5P_DEFAULT) <= 0 ||
+      wg_h5_read_param_double(f, key, v) != WG_OK) {
+    *v = NAN;
+    if (required) fprintf(stderr, PROG ": %s: no parameter %s in /parameters\n", file, key);
+    return required;
+  }
+  return 0;
+}
+
+static int field_alloc(field *fd)
+{
+  size_t c = (size_t)fd->nx * fd->ny;
+  fd->n = calloc(c, sizeof(double));
+  fd->ncb = calloc(c, sizeof(double));
+  fd->tg = calloc(c, sizeof(double));
+  fd->phase = calloc(c, 1);
+  return fd->n && fd->ncb && fd->tg && fd->phase ? 0 : 1;
+}
+
+static void field_free(field *fd)
+{
+  free(fd->n);
+  free(fd->ncb);
+  free(fd->tg);
+  free(fd->phase);
+}
+
+/* The time-averaged profile along x (wetgran-run's /observables/profiles). */
+static int read_profile(hid_t f, field *fd)
+{
+  static const char *p[] = {"/observables/profiles/x", "/observables/profiles/number_density",
+                            "/observables/profiles/bridge_density",
+                            "/observables/profiles/temperature"};
+  for (int k = 0; k < 4; k++)
+    if (need(f, fd->file, p[k], "(a run with profile_bins > 0, or use --source snapshots)")) return 1;
+  int rank;
+  hsize_t dims[8];
+  if (wg_h5_dims(f, p[1], &rank, dims) != WG_OK) return 1;
+  fd->nx = (int)dims[0];
+  fd->ny = 1;
+  if (fd->nx < 2 || field_alloc(fd)) {
+    fprintf(stderr, PROG ": %s: %s: fewer than 2 bins\n", fd->file, p[1]);
+    return 1;
+  }
+  if (wg_h5_read(f, p[1], H5T_NATIVE_DOUBLE, fd->n) || wg_h5_read(f, p[2], H5T_NATIVE_DOUBLE, fd->ncb) ||
+      wg_h5_read(f, p[3], H5T_NATIVE_DOUBLE, fd->tg))
+    return 1;
+  for (int i = 0; i < fd->nx; i++)
+    if (!(fd->n[i] > 0)) fd->tg[i] = NAN;
+  if (H5Aexists_by_name(f, "/observables/profiles", "t_start", H5P_DEFAULT) <= 0 ||
+      wg_h5_read_attr_double(f, "/observables/profiles", "t_start", &fd->t_from) != WG_OK)
+    fd->t_from = NAN;
+  fd->t_to = NAN;
+  return 0;
+}
+
+typedef struct snaps {
+  hsize_t frames, n;
+  int dim;
+  double *time, *mass;
+} snaps;
+
+static int snaps_open(hid_t f, const char *file, snaps *s)
+{
+  static const char *p[] = {"/particles/all/position/value", "/particles/all/position/time",
+                            "/particles/all/velocity/value", "/particles/all/bridge_count/value",
+                            "/particles/all/mass"};
+  for (int k = 0; k < 5; k++)
+    if (need(f, file, p[k], k == 0 ? "(a record without snapshots: set record_snapshots in the conf)" : NULL))
+      return 1;
+  int rank;
+  hsize_t dims[8];
+  if (wg_h5_dims(f, p[0], &rank, dims) != WG_OK) return 1;
+  if (rank != 3 || dims[2] < 2 || dims[2] > 3) {
+    fprintf(stderr, PROG ": %s: %s: not F x N x D\n", file, p[0]);
+    return 1;
+  }
+  s->frames = dims[0];
+  s->n = dims[1];
+  s->dim = (int)dims[2];
+  s->time = malloc(sizeof(double) * (s->frames ? s->frames : 1));
+  s->mass = malloc(sizeof(double) * (s->n ? s->n : 1));
+  if (!s->time || !s->mass || wg_h5_read(f, p[1], H5T_NATIVE_DOUBLE, s->time) ||
+      wg_h5_read(f, p[4], H5T_NATIVE_DOUBLE, s->mass))
+    return 1;
+  if (s->frames == 0) {
+    fprintf(stderr, PROG ": %s: %s: no snapshots\n", file, p[0]);
+    return 1;
+  }
+  return 0;
+}
+
+/* Accumulates frame k into the sums: counts, bridge ends, and per cell the kinetic energy
+   about the cell's own mean velocity (T_g per cell as in wetgran-run's profiles). */
+typedef struct sums {
+  double *cnt, *ends, *kin; /* per cell over frames */
+  double *pm, *pv, *pv2;    /* per cell within one frame: sum m, sum m v (dim), sum m v^2 */
+} sums;
+
+static int frame_cell(const field *fd, const double *r)
+{
+  int ix = (int)floor(r[0] / fd->lx * fd->nx);
+  ix = ((ix % fd->nx) + fd->nx) % fd->nx;
+  int iy = 0;
+  if (fd->ny > 1) {
+    iy = (int)floor(r[1] / fd->ly * fd->ny);
+    iy = ((iy % fd->ny) + fd->ny) % fd->ny;
+  }
+  return iy * fd->nx + ix;
+}
+
+static int add_frame(hid_t f, const field *fd, const snaps *s, hsize_t k, sums *u, double *pos,
+                     double *vel, uint8_t *bc)
+{
+  int D = s->dim;
+  if (wg_h5_read_rows(f, "/particles/all/position/value", H5T_NATIVE_DOUBLE, k, 1, pos) ||
+      wg_h5_read_rows(f, "/particles/all/velocity/value", H5T_NATIVE_DOUBLE, k, 1, vel) ||
+      wg_h5_read_rows(f, "/particles/all/bridge_count/value", H5T_NATIVE_UINT8, k, 1, bc))
+    return 1;
+  size_t c = (size_t)fd->nx * fd->ny;
+  memset(u->pm, 0, sizeof(double) * c);
+  memset(u->pv, 0, sizeof(double) * c * D);
+  memset(u->pv2, 0, sizeof(double) * c);
+  for (hsize_t i = 0; i < s->n; i++) {
+    int j = frame_cell(fd, pos + i * D);
+    double m = s->mass[i], v2 = 0;
+    u->cnt[j] += 1;
+    u->ends[j] += bc[i];
+    u->pm[j] += m;
+    for (int a = 0; a < D; a++) {
+      u->pv[(size_t)j * D + a] += m * vel[i * D + a];
+      v2 += vel[i * D + a] * vel[i * D + a];
+    }
+    u->pv2[j] += m * v2;
+  }
+  for (size_t j = 0; j < c; j++) {
+    if (u->pm[j] <= 0) continue;
+    double p2 = 0;
+    for (int a = 0; a < D; a++) p2 += u->pv[j * D + a] * u->pv[j * D + a];
+    u->kin[j] += u->pv2[j] - p2 / u->pm[j];
+  }
+  return 0;
+}
+
+/* The field from the snapshots with time in [t0, t1] (a single frame with k1 = k0 + 1). */
+static int read_snapshots(hid_t f, field *fd, const snaps *s, hsize_t k0, hsize_t k1)
+{
+  size_t c = (size_t)fd->nx * fd->ny;
+  int D = s->dim, rc = 0;
+  sums u = {calloc(c, sizeof(double)), calloc(c, sizeof(double)), calloc(c, sizeof(double)),
+            malloc(sizeof(double) * c), malloc(sizeof(double) * c * D), malloc(sizeof(double) * c)};
+  double *pos = malloc(sizeof(double) * s->n * D), *vel = malloc(sizeof(double) * s->n * D);
+  uint8_t *bc = malloc(s->n ? s->n : 1);
+  if (!u.cnt || !u.ends || !u.kin || !u.pm || !u.pv || !u.pv2 || !pos || !vel || !bc) rc = 1;
+  int used = 0;
+  for (hsize_t k = k0; k < k1 && !rc; k++) {
+    rc = add_frame(f, fd, s, k, &u, pos, vel, bc);
+    used++;
+  }
+  if (!rc && used == 0) {
+    fprintf(stderr, PROG ": %s: no snapshot in the window\n", fd->file);
+    rc = 1;
+  }
+  double area = fd->lx / fd->nx * (fd->ny > 1 ? fd->ly / fd->ny : 1);
+  for (size_t j = 0; j < c && !rc; j++) {
+    fd->n[j] = u.cnt[j] / used / area;
+    fd->ncb[j] = 0.5 * u.ends[j] / used / area; /* half a bridge per end, as the profiles */
+    fd->tg[j] = u.cnt[j] > 0 ? u.kin[j] / (u.cnt[j] * D) : NAN;
+  }
+  free(u.cnt), free(u.ends), free(u.kin), free(u.pm), free(u.pv), free(u.pv2);
+  free(pos), free(vel), free(bc);
+  return rc;
+}
+
+static int run_head(hid_t f, field *fd)
+{
+  if (param(f, fd->file, "e_cb", &fd->e_cb, 1)) return 1;
+  param(f, fd->file, "gamma", &fd->gamma, 0);
+  param(f, fd->file, "estar", &fd->estar, 0);
+  param(f, fd->file, "s_crit", &fd->s_crit, 0);
+  param(f, fd->file, "f_b", &fd->f_b, 0);
+  param(f, fd->file, "height", &fd->height, 0);
+  if (need(f, fd->file, "/particles/all/box/edges", NULL)) return 1;
+  int rank;
+  hsize_t dims[8];
+  double e[3] = {0, 0, 0};
+  if (wg_h5_dims(f, "/particles/all/box/edges", &rank, dims) || dims[0] < 2 || dims[0] > 3 ||
+      wg_h5_read(f, "/particles/all/box/edges", H5T_NATIVE_DOUBLE, e)) {
+    fprintf(stderr, PROG ": %s: /particles/all/box/edges: not 2 or 3 lengths\n", fd->file);
+    return 1;
+  }
+  fd->dim = (int)dims[0];
+  fd->lx = e[0];
+  fd->ly = fd->dim == 3 ? e[1] : 1;
+  return 0;
+}
+
+/* One run's field.  frame >= 0: that snapshot alone (relax). */
+static int load_field(const char *file, const options *o, field *fd, long frame)
+{
+  memset(fd, 0, sizeof *fd);
+  fd->file = file;
+  hid_t f = wg_run_open(file);
+  if (f < 0) return 1;
+  int rc = run_head(f, fd);
+  enum source_kind src = o->source;
+  if (!rc && src == SOURCE_AUTO)
+    src = fd->dim == 2 && frame < 0 && !(o->window > 0) && wg_h5_exists(f, "/observables/profiles/number_density")
+              ? SOURCE_PROFILE : SOURCE_SNAPSHOTS;
+  if (!rc && src == SOURCE_PROFILE) {
+    rc = read_profile(f, fd);
+  } else if (!rc) {
+    snaps s = {0};
+    rc = snaps_open(f, file, &s);
+    if (!rc) {
+      fd->nx = o->nx > 0 ? o->nx : (int)fmax(2, round(fd->lx / 4));
+      fd->ny = fd->dim == 3 ? (o->ny > 0 ? o->ny : (int)fmax(2, round(fd->ly / 4))) : 1;
+      rc = field_alloc(fd);
+    }
+    if (!rc) {
+      hsize_t k0 = 0, k1 = s.frames;
+      if (frame >= 0 && (hsize_t)frame >= s.frames) {
+        fprintf(stderr, PROG ": %s: /particles/all/position/value: no snapshot %ld (%llu snapshots)\n",
+                file, frame, (unsigned long long)s.frames);
+        rc = 1;
+      } else if (frame >= 0) {
+        k0 = (hsize_t)frame;
+        k1 = k0 + 1;
+      } else {
+        while (k0 < s.frames && s.time[k0] < o->t0) k0++;
+        k1 = k0;
+        while (k1 < s.frames && s.time[k1] <= o->t1) k1++;
+      }
+      if (!rc) rc = read_snapshots(f, fd, &s, k0, k1);
+      if (!rc) {
+        fd->t_from = s.time[k0];
+        fd->t_to = s.time[k1 - 1];
+      }
+    }
+    free(s.time);
+    free(s.mass);
+  }
+  wg_h5_close(f);
+  return rc;
+}
+
+/* ---- the mask ---------------------------------------------------------------------------- */
+
+/* log10 of the cell's value in the mask's field; gas-like values are large (temperature) or
+   small (densities); -INFINITY / +INFINITY where the cell is empty. */
+static double cell_value(const field *fd, size_t j, enum field_kind k)
+{
+  switch (k) {
+  case FIELD_TEMPERATURE: return isfinite(fd->tg[j]) && fd->tg[j] > 0 ? log10(fd->tg[j] / fd->e_cb) : INFINITY;
+  case FIELD_DENSITY: return fd->n[j] > 0 ? log10(fd->n[j]) : -INFINITY;
+  default: return fd->ncb[j] > 0 ? log10(fd->ncb[j]) : -INFINITY;
+  }
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+  double x = *(const double *)a, y = *(const double *)b;
+  return (x > y) - (x < y);
+}
+
+/* Otsu: the cut of sorted x[0..n-1] into two classes with the largest between-class
+   variance (as wetgran-orderparam); the classes' means in m1, m2. */
+static double otsu(const double *x, size_t n, double *m1, double *m2)
+{
+  double best = -1, cut = NAN, total = 0, left = 0;
+  *m1 = *m2 = NAN;
+  for (size_t i = 0; i < n; i++) total += x[i];
+  for (size_t k = 1; k < n; k++) {
+    left += x[k - 1];
+    double a = left / k, b = (total - left) / (n - k);
+    double between = (double)k * (n - k) * (a - b) * (a - b);
+    if (between > best && x[k] > x[k - 1]) {
+      best = between;
+      cut = 0.5 * (x[k - 1] + x[k]);
+      *m1 = a;
+      *m2 = b;
+    }
+  }
+  return cut;
+}
+
+/* The cut (log10) from all fields' cells; prints the '# threshold' line.  Empty cells (infinite
+   values) are left out of the classes: they are gas whatever the cut. */
+static int pooled_cut(field *fds, int nf, const options *o, double *cut)
+{
+  const char *name = o->field == FIELD_TEMPERATURE ? "T_g/E_cb" : o->field == FIELD_DENSITY ? "number_density" : "bridge_density";
+  if (isfinite(o->t_fg)) {
+    *cut = log10(o->t_fg);
+    printf("# threshold %s = %.6g (given)\n", name, o->t_fg);
+    return 0;
+  }
+  size_t tot = 0, m = 0;
+  for (int r = 0; r < nf; r++) tot += (size_t)fds[r].nx * fds[r].ny;
+  double *x = malloc(sizeof(double) * (tot ? tot : 1));
+  if (!x) return 1;
+  for (int r = 0; r < nf; r++)
+    for (size_t j = 0; j < (size_t)fds[r].nx * fds[r].ny; j++) {
+      double v = cell_value(&fds[r], j, o->field);
+      if (isfinite(v)) x[m++] = v;
+    }
+  qsort(x, m, sizeof *x, cmp_double);
+  double m1, m2;
+  *cut = m >= 2 ? otsu(x, m, &m1, &m2) : NAN;
+  free(x);
+  if (!isfinite(*cut) || m2 - m1 < MIN_SEPARATION) {
+    fprintf(stderr, PROG ": %s%s: the cells' %s form one class (Otsu's classes %.3g decades apart, "
+            "fewer than %.2g): no two phases to cut; give --t-fg\n", fds[0].file, nf > 1 ? " ..." : "",
+            name, isfinite(*cut) ? m2 - m1 : 0.0, MIN_SEPARATION);
+    return 1;
+  }
+  printf("# threshold %s = %.6g: Otsu's cut of log10 over %zu cells of %d run(s); class means %.4g and %.4g "
+         "(%.2f decades apart)\n", name, pow(10, *cut), m, nf, pow(10, m1), pow(10, m2), m2 - m1);
+  return 0;
+}
+
+static void make_mask(field *fd, const options *o, double cut)
+{
+  for (size_t j = 0; j < (size_t)fd->nx * fd->ny; j++) {
+    double v = cell_value(fd, j, o->field);
+    int gas = o->field == FIELD_TEMPERATURE ? v > cut : v < cut;
+    fd->phase[j] = gas ? PH_GAS : PH_FLUID;
+    if (!gas && isfinite(fd->tg[j]) && fd->tg[j] / fd->e_cb < o->t_sf) fd->phase[j] = PH_SOLID;
+  }
+}
+
+/* ---- components with periodic boundaries ------------------------------------------------- */
+
+typedef struct component {
+  long cells;
+  int wrap_x, wrap_y; /* the component closes on itself around the box along x / y */
+} component;
+
+/* Labels the connected components (4-neighbours, periodic) of the cells where dense(phase) is
+   'want' (gas: 0, dense: 1).  A breadth-first search keeps each cell's unwrapped position; a
+   neighbour already reached at another unwrapped position means the component winds around
+   the box in that direction (a strip or a plug spanning the box).  Returns the number of
+   components; comp[] their sizes and windings (the largest first is not guaranteed). */
+static int components(const field *fd, int want, component **out)
+{
+  int nx = fd->nx, ny = fd->ny;
+  size_t c = (size_t)nx * ny;
+  int *lab = malloc(sizeof(int) * c), *ux = malloc(sizeof(int) * c), *uy = malloc(sizeof(int) * c);
+  size_t *queue = malloc(sizeof(size_t) * c);
+  component *comp = NULL;
+  int nc = 0;
+  if (!lab || !ux || !uy || !queue) goto done;
+  for (size_t j = 0; j < c; j++) lab[j] = -1;
+  for (size_t s = 0; s < c; s++) {
+    if (lab[s] >= 0 || (fd->phase[s] != PH_GAS) != want) continue;
+    component *t = realloc(comp, sizeof *comp * (nc + 1));
+    if (!t) break;
+    comp = t;
+    comp[nc] = (component){0, 0, 0};
+    size_t head = 0, tail = 0;
+    queue[tail++] = s;
+    lab[s] = nc;
+    ux[s] = (int)(s % nx);
+    uy[s] = (int)(s / nx);
+    while (head < tail) {
+      size_t j = queue[head++];
+      comp[nc].cells++;
+      static const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+      for (int k = 0; k < (ny > 1 ? 4 : 2); k++) {
+        int X = ux[j] + dx[k], Y = uy[j] + dy[k];
+        int x = ((X % nx) + nx) % nx, y = ((Y % ny) + ny) % ny;
+        size_t q = (size_t)y * nx + x;
+        if ((fd->phase[q] != PH_GAS) != want) continue;
+        if (lab[q] < 0) {
+          lab[q] = nc;
+          ux[q] = X;
+          uy[q] = Y;
+          queue[tail++] = q;
+        } else {
+          if (ux[q] != X) comp[nc].wrap_x = 1;
+          if (uy[q] != Y) comp[nc].wrap_y = 1;
+        }
+      }
+    }
+    nc++;
+  }
+done:
+  free(lab), free(ux), free(uy), free(queue);
+  *out = comp;
+  return nc;
+}
+
+static int largest(const component *c, int n)
+{
+  int b = -1;
+  for (int k = 0; k < n; k++)
+    if (b < 0 || c[k].cells > c[b].cells) b = k;
+  return b;
+}
+
+/* ---- mode ag ----------------------------------------------------------------------------- */
+
+typedef struct agrow {
+  double a_g, err, r_eq;
+  int n_gas, n_dense;
+  const char *shape;
+} agrow;
+
+static agrow measure_ag(const field *fd)
+{
+  agrow a = {0, 0, NAN, 0, 0, "-"};
+  size_t c = (size_t)fd->nx * fd->ny, gas = 0, edge = 0;
+  for (size_t j = 0; j < c; j++) {
+    if (fd->phase[j] != PH_GAS) continue;
+    gas++;
+    int x = (int)(j % fd->nx), y = (int)(j / fd->nx);
+    int nb[4][2] = {{x + 1, y}, {x - 1, y}, {x, y + 1}, {x, y - 1}}, touch = 0;
+    for (int k = 0; k < (fd->ny > 1 ? 4 : 2); k++) {
+      size_t q = (size_t)((nb[k][1] + fd->ny) % fd->ny) * fd->nx + (nb[k][0] + fd->nx) % fd->nx;
+      if (fd->phase[q] != PH_GAS) touch = 1;
+    }
+    edge += touch;
+  }
+  a.a_g = (double)gas / c;
+  a.err = 0.5 * edge / c; /* the cut places each interface to within half a cell */
+  component *g = NULL, *d = NULL;
+  a.n_gas = components(fd, 0, &g);
+  a.n_dense = components(fd, 1, &d);
+  if (gas == 0) a.shape = "f";
+  else if (gas == c) a.shape = "g";
+  else if (fd->ny == 1) a.shape = "plug";
+  else {
+    int bg = largest(g, a.n_gas), bd = largest(d, a.n_dense);
+    if (!g[bg].wrap_x && !g[bg].wrap_y) {
+      a.shape = "I";
+      a.r_eq = sqrt(g[bg].cells * (fd->lx / fd->nx) * (fd->ly / fd->ny) / M_PI);
+    } else if (!d[bd].wrap_x && !d[bd].wrap_y) {
+      a.shape = "III";
+      a.r_eq = sqrt(d[bd].cells * (fd->lx / fd->nx) * (fd->ly / fd->ny) / M_PI);
+    } else
+      a.shape = "II";
+  }
+  free(g);
+  free(d);
+  return a;
+}
+
+/* The snapshot times of a run (for --window). */
+static int run_times(const char *file, double **t, hsize_t *n)
+{
+  hid_t f = wg_run_open(file);
+  if (f < 0) return 1;
+  snaps s = {0};
+  int rc = snaps_open(f, file, &s);
+  wg_h5_close(f);
+  free(s.mass);
+  *t = s.time;
+  *n = s.frames;
+  return rc;
+}
+
+/* The fields of every run (with --window: of every window of every run holding a snapshot),
+   masked with one cut pooled over all of them. */
+static int load_all(int nf, char **files, const options *o, field **out, int *nfd, double *cut)
+{
+  field *fds = NULL;
+  int n = 0, cap = 0;
+  *out = NULL;
+  *nfd = 0;
+  for (int r = 0; r < nf; r++) {
+    double lo = o->t0, hi = o->t1, step = INFINITY;
+    double *t = NULL;
+    hsize_t nt = 0;
+    if (o->window > 0) {
+      if (run_times(files[r], &t, &nt)) {
+        free(t);
+        return 1;
+      }
+      lo = fmax(o->t0, t[0]);
+      hi = fmin(o->t1, t[nt - 1]);
+      step = o->window;
+    }
+    for (double w = lo; w <= hi; w += step) {
+      options one = *o;
+      if (o->window > 0) {
+        one.t0 = w;
+        one.t1 = nextafter(w + step, -INFINITY); /* windows [w, w + step) */
+        int any = 0;
+        for (hsize_t k = 0; k < nt; k++) any |= t[k] >= one.t0 && t[k] <= one.t1;
+        if (!any) continue;
+      }
+      if (n == cap) {
+        cap = cap ? 2 * cap : 16;
+        field *g = realloc(fds, sizeof *fds * cap);
+        if (!g) {
+          free(t);
+          return 1;
+        }
+        fds = g;
+        *out = fds;
+      }
+      if (load_field(files[r], &one, &fds[n], -1)) {
+        free(t);
+        *nfd = n + 1;
+        return 1;
+      }
+      *nfd = ++n;
+      if (!(o->window > 0)) break;
+    }
+    free(t);
+  }
+  if (pooled_cut(fds, n, o, cut)) return 1;
+  for (int r = 0; r < n; r++) make_mask(&fds[r], o, *cut);
+  return 0;
+}
+
+/* The ag table as HDF5 (--h5): one dataset per column under /ag, written to FILE.tmp and
+   renamed when complete. */
+#define AG_COLS 10
+static int write_ag_h5(const char *path, int nf, const char **files, double (*col)[AG_COLS],
+                       const char *const *shapes, double cut, const options *o)
+{
+  static const char *name[AG_COLS] = {"gamma", "estar", "estar_tilde", "a_g", "a_g_err", "n_gas", "n_dense", "r_eq", "t_from", "t_to"};
+  static const char *unit[AG_COLS] = {"1", "1", "1", "1", "1", "1", "1", "d", "tau", "tau"};
+  static const char *desc[AG_COLS] = {
+      "peak acceleration Gamma of the run", "driving energy E* of the run",
+      "(E* - E*_f-fgc) / (E*_fgc-g - E*_f-fgc) (--ends)", "gas fraction of the lateral plane",
+      "half the interface cells over all cells", "gas components (periodic boundaries)",
+      "dense (fluid or solid) components", "equivalent radius sqrt(A/pi) of the drop (shapes I, III)",
+      "first time averaged over (profile: its t_start)", "last time averaged over (profile: nan)"};
+  char tmp[4096];
+  snprintf(tmp, sizeof tmp, "%s.tmp", path);
+  hid_t f = wg_h5_create(tmp);
+  if (f < 0) return 1;
+  double *v = malloc(sizeof(double) * nf);
+  int rc = !v;
+  hsize_t dims[1] = {(hsize_t)nf};
+  for (int c = 0; c < AG_COLS && !rc; c++) {
+    for (int r = 0; r < nf; r++) v[r] = col[r][c];
+    char p[64];
+    snprintf(p, sizeof p, "/ag/%s", name[c]);
+    rc = wg_h5_write(f, p, H5T_NATIVE_DOUBLE, 1, dims, v, unit[c], desc[c]) != WG_OK;
+  }
+  free(v);
+  if (!rc) rc = wg_h5_attr_strings(f, "/ag", "file", nf, files) != WG_OK;
+  if (!rc) rc = wg_h5_attr_strings(f, "/ag", "shape", nf, shapes) != WG_OK;
+  if (!rc) rc = wg_h5_attr_double(f, "/ag", "threshold", pow(10, cut)) != WG_OK;
+  if (!rc) rc = wg_h5_attr_string(f, "/ag", "threshold_field", o->field == FIELD_TEMPERATURE ? "T_g/E_cb" : o->field == FIELD_DENSITY ? "number_density" : "bridge_density") != WG_OK;
+  if (wg_h5_close(f) != WG_OK) rc = 1;
+  if (!rc && rename(tmp, path) != 0) {
+    fprintf(stderr, PROG ": %s: cannot rename from %s\n", path, tmp);
+    rc = 1;
+  }
+  if (rc) remove(tmp);
+  return rc;
+}
+
+static int mode_ag(int nf, char **files, const options *o)
+{
+  field *fds = NULL;
+  double cut;
+  int n = 0;
+  int rc = load_all(nf, files, o, &fds, &n, &cut);
+  double (*col)[AG_COLS] = malloc(sizeof *col * (n ? n : 1));
+  const char **shapes = malloc(sizeof *shapes * (n ? n : 1)), **names = malloc(sizeof *names * (n ? n : 1));
+  if (!col || !shapes || !names) rc = 1;
+  if (!rc) {
+    printf("file\tgamma\testar\testar_tilde\ta_g\ta_g_err\tn_gas\tn_dense\tshape\tr_eq\tcells\tt_from\tt_to\n");
+    for (int r = 0; r < n; r++) {
+      agrow a = measure_ag(&fds[r]);
+      double et = isfinite(o->ef) ? (fds[r].estar - o->ef) / (o->eg - o->ef) : NAN;
+      double row[AG_COLS] = {fds[r].gamma, fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.r_eq,
+                             fds[r].t_from, fds[r].t_to};
+      memcpy(col[r], row, sizeof row);
+      shapes[r] = a.shape;
+      names[r] = fds[r].file;
+      printf("%s\t%.10g\t%.10g\t%.6g\t%.6g\t%.3g\t%d\t%d\t%s\t%.6g\t%dx%d\t%.10g\t%.10g\n", fds[r].file,
+             fds[r].gamma, fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.shape, a.r_eq, fds[r].nx,
+             fds[r].ny, fds[r].t_from, fds[r].t_to);
+    }
+    if (o->h5) rc = write_ag_h5(o->h5, n, names, col, shapes, cut, o);
+  }
+  for (int r = 0; r < n; r++) field_free(&fds[r]);
+  free(fds);
+  free(col);
+  free(shapes);
+  free(names);
+  return rc;
+}
+
+static int mode_field(int nf, char **files, const options *o)
+{
+  field *fds = NULL;
+  double cut;
+  int n = 0;
+  int rc = load_all(nf, files, o, &fds, &n, &cut);
+  if (!rc) {
+    printf("file\tx\ty\tnumber_density\tbridge_density\ttemperature\ttemperature_ecb\tphase\tt_from\tt_to\n");
+    for (int r = 0; r < n; r++) {
+      field *fd = &fds[r];
+      for (int y = 0; y < fd->ny; y++)
+        for (int x = 0; x < fd->nx; x++) {
+          size_t j = (size_t)y * fd->nx + x;
+          printf("%s\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%.6g\t%c\t%.10g\t%.10g\n", fd->file, (x + 0.5) * fd->lx / fd->nx,
+                 fd->ny > 1 ? (y + 0.5) * fd->ly / fd->ny : 0.0, fd->n[j], fd->ncb[j], fd->tg[j],
+                 fd->tg[j] / fd->e_cb, "gfs"[fd->phase[j]], fd->t_from, fd->t_to);
+        }
+    }
+  }
+  for (int r = 0; r < n; r++) field_free(&fds[r]);
+  free(fds);
+  return rc;
+}
+
+/* ---- strip: interfaces and the cosine fit ------------------------------------------------ */
+
+/* For each column x of a strip along x: the dense band's two edges along y, found as the
+   cells where the column changes phase (periodic), placed at the cell boundary; the band is
+   the longest dense run of the column.  edges[x][0] lower, [1] upper (unwrapped: upper may
+   exceed L_y).  Returns the number of columns with a band. */
+static int strip_edges(const field *fd, double *lo, double *hi)
+{
+  int cols = 0;
+  double dy = fd->ly / fd->ny;
+  for (int x = 0; x < fd->nx; x++) {
+    int best = 0, start = -1;
+    lo[x] = hi[x] = NAN;
+    for (int s = 0; s < fd->ny; s++) {
+      /* a run starts at s where s is dense and s - 1 is gas */
+      int here = fd->phase[(size_t)s * fd->nx + x] != PH_GAS;
+      int prev = fd->phase[(size_t)((s - 1 + fd->ny) % fd->ny) * fd->nx + x] != PH_GAS;
+      if (!here || prev) continue;
+      int len = 0;
+      while (len < fd->ny && fd->phase[(size_t)((s + len) % fd->ny) * fd->nx + x] != PH_GAS) len++;
+      if (len > best) {
+        best = len;
+        start = s;
+      }
+    }
+    if (start < 0) continue;
+    lo[x] = start * dy;
+    hi[x] = (start + best) * dy;
+    cols++;
+  }
+  return cols;
+}
+
+/* h(x) = c + A cos(2 pi x / L) + B sin(2 pi x / L) by linear least squares (GSL); the
+   amplitude A of the cosine (the force's own shape, Eq. 5.3-5.4) and its error, scaled by
+   sqrt(chi^2/dof).  Columns with NAN are skipped; the edges are unwrapped relative to the
+   first column so that a band crossing y = L_y stays one curve. */
+static int cosine_fit(const double *xs, const double *h, int n, double L, double *A, double *dA)
+{
+  int m = 0;
+  for (int i = 0; i < n; i++) m += isfinite(h[i]);
+  if (m < 4) return 1;
+  gsl_matrix *X = gsl_matrix_alloc(m, 3), *cov = gsl_matrix_alloc(3, 3);
+  gsl_vector *y = gsl_vector_alloc(m), *c = gsl_vector_alloc(3);
+  gsl_multifit_linear_workspace *w = gsl_multifit_linear_alloc(m, 3);
+  int k = 0;
+  for (int i = 0; i < n; i++) {
+    if (!isfinite(h[i])) continue;
+    double ph = 2 * M_PI * xs[i] / L;
+    gsl_matrix_set(X, k, 0, 1);
+    gsl_matrix_set(X, k, 1, cos(ph));
+    gsl_matrix_set(X, k, 2, sin(ph));
+    gsl_vector_set(y, k, h[i]);
+    k++;
+  }
+  double chi2;
+  gsl_multifit_linear(X, y, c, cov, &chi2, w);
+  *A = gsl_vector_get(c, 1);
+  *dA = sqrt(gsl_matrix_get(cov, 1, 1) * (m > 3 ? chi2 / (m - 3) : 0));
+  gsl_matrix_free(X), gsl_matrix_free(cov), gsl_vector_free(y), gsl_vector_free(c);
+  gsl_multifit_linear_free(w);
+  return 0;
+}
+
+/* Unwraps a periodic edge curve along x (jumps of more than L/2 are taken across y = L). */
+static void unwrap(double *h, int n, double L)
+{
+  double prev = NAN;
+  for (int i = 0; i < n; i++) {
+    if (!isfinite(h[i])) continue;
+    if (isfinite(prev)) {
+      while (h[i] - prev > L / 2) h[i] -= L;
+      while (h[i] - prev < -L / 2) h[i] += L;
+    }
+    prev = h[i];
+  }
+}
+
+/* A~_d of one field: the mean of the two interfaces' cosine amplitudes over L_x, its error. */
+static int strip_amplitude(const field *fd, double *ad, double *err)
+{
+  double *lo = malloc(sizeof(double) * fd->nx), *hi = malloc(sizeof(double) * fd->nx),
+         *xs = malloc(sizeof(double) * fd->nx);
+  int rc = !lo || !hi || !xs;
+  if (!rc) {
+    for (int x = 0; x < fd->nx; x++) xs[x] = (x + 0.5) * fd->lx / fd->nx;
+    if (strip_edges(fd, lo, hi) < 4) rc = 1;
+  }
+  double a1, e1, a2, e2;
+  if (!rc) {
+    unwrap(lo, fd->nx, fd->ly);
+    unwrap(hi, fd->nx, fd->ly);
+    rc = cosine_fit(xs, lo, fd->nx, fd->lx, &a1, &e1) || cosine_fit(xs, hi, fd->nx, fd->lx, &a2, &e2);
+  }
+  if (!rc) {
+    *ad = 0.5 * (a1 + a2) / fd->lx;
+    *err = 0.5 * sqrt(e1 * e1 + e2 * e2) / fd->lx;
+  }
+  if (rc) fprintf(stderr, PROG ": %s: no strip along x to trace (shape must be II)\n", fd->file);
+  free(lo), free(hi), free(xs);
+  return rc;
+}
+
+static int mode_strip(int nf, char **files, const options *o)
+{
+  field *fds = NULL;
+  double cut;
+  int n = 0;
+  int rc = load_all(nf, files, o, &fds, &n, &cut);
+  for (int r = 0; !rc && r < n; r++) {
+    field *fd = &fds[r];
+    if (fd->ny < 2) {
+      fprintf(stderr, PROG ": %s: a strip needs a 2D lateral plane (a 3D run)\n", fd->file);
+      rc = 1;
+      break;
+    }
+    agrow shape = measure_ag(fd);
+    if (strcmp(shape.shape, "II")) {
+      fprintf(stderr, PROG ": %s: no strip along x to trace (shape %s, not II)\n", fd->file, shape.shape);
+      rc = 1;
+      break;
+    }
+    double ad, err;
+    if ((rc = strip_amplitude(fd, &ad, &err))) break;
+    /* N_p: particles in the dense cells; the fluid's n and n_cb per volume (height) */
+    double cell = fd->lx / fd->nx * fd->ly / fd->ny, np = 0, ncb = 0, area = 0;
+    for (size_t j = 0; j < (size_t)fd->nx * fd->ny; j++)
+      if (fd->phase[j] != PH_GAS) {
+        np += fd->n[j] * cell;
+        ncb += fd->ncb[j] * cell;
+        area += cell;
+      }
+    printf("file\t%s\tnan\nkey\tvalue\terror\nt_from\t%.10g\tnan\nt_to\t%.10g\tnan\n", fd->file, fd->t_from, fd->t_to);
+    printf("ad_tilde\t%.6g\t%.3g\nn_p\t%.6g\tnan\n", ad, err, np);
+    double h = fd->height > 0 ? fd->height : NAN;
+    double nvol = np / (area * h), ncbvol = ncb / (area * h);
+    double gamma_l = fd->f_b / M_PI; /* F_B = pi d gamma (Eq. 2.8), d = 1 */
+    if (isfinite(o->fsmax)) {
+      double sigma = np * o->fsmax / (4 * M_PI * M_PI * ad); /* Eq. 5.9 */
+      printf("sigma\t%.6g\t%.3g\nsigma_over_gamma\t%.6g\t%.3g\n", sigma, sigma * err / fabs(ad),
+             sigma / gamma_l, sigma / gamma_l * err / fabs(ad));
+      /* Eq. 5.9 balances the work against the extra length of the interface line; spread
+         over the height H of the box it is an energy per area, the quantity of Eq. 5.10 */
+      printf("sigma_area_over_gamma\t%.6g\t%.3g\n", sigma / (gamma_l * h), sigma / (gamma_l * h) * err / fabs(ad));
+    }
+    /* Eq. 5.10 */
+    printf("eq5_10_sigma_over_gamma\t%.6g\tnan\n", M_PI / 6 * ncbvol * fd->s_crit * pow(1 / nvol, 1.0 / 3));
+  }
+  for (int r = 0; r < n; r++) field_free(&fds[r]);
+  free(fds);
+  return rc;
+}
+
+/* ---- relax: A~_d(t) over seeds ----------------------------------------------------------- */
+
+static int mode_relax(int nf, char **files, const options *o)
+{
+  /* the frames of the first run set the times; every run must have them */
+  hid_t f = wg_run_open(files[0]);
+  if (f < 0) return 1;
+  snaps s0 = {0};
+  int rc = snaps_open(f, files[0], &s0);
+  wg_h5_close(f);
+  if (rc) return 1;
+  hsize_t nt = s0.frames;
+  double *sum = calloc(nt, sizeof(double)), *sum2 = calloc(nt, sizeof(double));
+  int *cnt = calloc(nt, sizeof(int));
+  if (!sum || !sum2 || !cnt) rc = 1;
+  double cut = isfinite(o->t_fg) ? log10(o->t_fg) : NAN;
+  for (int r = 0; !rc && r < nf; r++)
+    for (hsize_t k = 0; !rc && k < nt; k++) {
+      field fd;
+      if ((rc = load_field(files[r], o, &fd, (long)k))) break;
+      if (fd.ny < 2) {
+        fprintf(stderr, PROG ": %s: relax needs a 3D run (a strip on the lateral plane)\n", files[r]);
+        rc = 1;
+      }
+      if (!rc && !isfinite(cut)) rc = pooled_cut(&fd, 1, o, &cut);
+      if (!rc) {
+        make_mask(&fd, o, cut);
+        double ad, err;
+        if (strip_amplitude(&fd, &ad, &err) == 0) {
+          sum[k] += fabs(ad);
+          sum2[k] += ad * ad;
+          cnt[k]++;
+        }
+      }
+      field_free(&fd);
+    }
+  if (!rc) {
+    printf("t\tad_tilde\tsd\tn\n");
+    double *lt = malloc(sizeof(double) * nt), *ly = malloc(sizeof(double) * nt);
+    size_t m = 0;
+    for (hsize_t k = 0; k < nt; k++) {
+      if (!cnt[k]) continue;
+      double mean = sum[k] / cnt[k], var = cnt[k] > 1 ? (sum2[k] - cnt[k] * mean * mean) / (cnt[k] - 1) : NAN;
+      printf("%.10g\t%.6g\t%.3g\t%d\n", s0.time[k], mean, var > 0 ? sqrt(var) : 0.0, cnt[k]);
+      if (mean > 0 && lt && ly) {
+        lt[m] = s0.time[k];
+        ly[m++] = log(mean);
+      }
+    }
+    if (m >= 3) {
+      double c0, c1, c00, c01, c11, ss;
+      gsl_fit_linear(lt, 1, ly, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
+      double tau = -1 / c1, dtau = sqrt(c11) / (c1 * c1);
+      printf("# fit ad_tilde = A0 exp(-t / tau): A0 = %.6g, tau = %.6g +- %.3g\n", exp(c0), tau, dtau);
+      if (isfinite(o->sigma))
+        printf("# mu_f = 1 / ((2 pi)^2 sigma tau) = %.6g +- %.3g (Eq. 5.13, sigma = %g)\n",
+               1 / (4 * M_PI * M_PI * o->sigma * tau), dtau / (4 * M_PI * M_PI * o->sigma * tau * tau), o->sigma);
+    } else
+      printf("# fewer than 3 times with a strip: no fit\n");
+    free(lt), free(ly);
+  }
+  free(sum), free(sum2), free(cnt), free(s0.time), free(s0.mass);
+  return rc;
+}
+
+/* ---- spacetime ---------------------------------------------------------------------------- */
+
+static int mode_spacetime(int nf, char **files, const options *o)
+{
+  if (nf != 1) {
+    fprintf(stderr, PROG ": spacetime takes one run\n");
+    return 2;
+  }
+  hid_t f = wg_run_open(files[0]);
+  if (f < 0) return 1;
+  snaps s = {0};
+  int rc = snaps_open(f, files[0], &s);
+  wg_h5_close(f);
+  if (rc) return 1;
+  printf("t\tx\tnumber_density\tbridge_density\n");
+  for (hsize_t k = 0; !rc && k < s.frames; k++) {
+    if (s.time[k] < o->t0 || s.time[k] > o->t1) continue;
+    options one = *o;
+    one.ny = 1;
+    field fd;
+    rc = load_field(files[0], &one, &fd, (long)k);
+    if (!rc) {
+      /* along x only: sum over y (3D runs) */
+      for (int x = 0; x < fd.nx; x++) {
+        double n = 0, b = 0;
+        for (int y = 0; y < fd.ny; y++) {
+          n += fd.n[(size_t)y * fd.nx + x];
+          b += fd.ncb[(size_t)y * fd.nx + x];
+        }
+        printf("%.10g\t%.6g\t%.6g\t%.6g\n", s.time[k], (x + 0.5) * fd.lx / fd.nx, n / fd.ny, b / fd.ny);
+      }
+      printf("\n");
+    }
+    field_free(&fd);
+  }
+  free(s.time), free(s.mass);
+  return rc;
+}
+
+/* ---- powerfit ----------------------------------------------------------------------------- */
+
+typedef struct pdata {
+  size_t n;
+  double *x, *y;
+} pdata;
+
+static int power_f(const gsl_vector *p, void *d_, gsl_vector *r)
+{
+  const pdata *d = d_;
+  double a = gsl_vector_get(p, 0), b = gsl_vector_get(p, 1);
+  for (size_t i = 0; i < d->n; i++) gsl_vector_set(r, i, a * pow(d->x[i], b) - d->y[i]);
+  return GSL_SUCCESS;
+}
+
+static int power_df(const gsl_vector *p, void *d_, gsl_matrix *J)
+{
+  const pdata *d = d_;
+  double a = gsl_vector_get(p, 0), b = gsl_vector_get(p, 1);
+  for (size_t i = 0; i < d->n; i++) {
+    double xb = pow(d->x[i], b);
+    gsl_matrix_set(J, i, 0, xb);
+    gsl_matrix_set(J, i, 1, a * xb * log(d->x[i]));
+  }
+  return GSL_SUCCESS;
+}
+
+static int mode_powerfit(const char *path, const options *o)
+{
+  if (!o->xcol || !o->ycol) {
+    fprintf(stderr, PROG ": powerfit needs --x COL and --y COL\n");
+    return 2;
+  }
+  FILE *f = wg_table_open(path);
+  if (!f) return 1;
+  char line[8192];
+  int xc = -1, yc = -1, header = 0, lineno = 0;
+  size_t cap = 0;
+  pdata d = {0, NULL, NULL};
+  while (fgets(line, sizeof line, f)) {
+    lineno++;
+    line[strcspn(line, "\r\n")] = 0;
+    if (line[0] == '#' || !line[0]) continue;
+    char *fld[MAX_COLS];
+    int nfld = 0;
+    for (char *t = strtok(line, "\t"); t && nfld < MAX_COLS; t = strtok(NULL, "\t")) fld[nfld++] = t;
+    if (!header) {
+      for (int k = 0; k < nfld; k++) {
+        if (!strcmp(fld[k], o->xcol)) xc = k;
+        if (!strcmp(fld[k], o->ycol)) yc = k;
+      }
+      if (xc < 0 || yc < 0) {
+        fprintf(stderr, PROG ": %s:%d: no column '%s' in the header\n", path, lineno, xc < 0 ? o->xcol : o->ycol);
+        if (f != stdin) fclose(f);
+        return 1;
+      }
+      header = 1;
+      continue;
+    }
+    if (xc >= nfld || yc >= nfld) continue;
+    double x = strtod(fld[xc], NULL), y = strtod(fld[yc], NULL);
+    if (!(x > o->xmin && x <= o->xmax) || !isfinite(y) || y <= 0) continue;
+    if (d.n == cap) {
+      cap = cap ? 2 * cap : 64;
+      d.x = realloc(d.x, sizeof(double) * cap);
+      d.y = realloc(d.y, sizeof(double) * cap);
+      if (!d.x || !d.y) return 1;
+    }
+    d.x[d.n] = x;
+    d.y[d.n++] = y;
+  }
+  if (f != stdin) fclose(f);
+  if (d.n < 3) {
+    fprintf(stderr, PROG ": %s: %zu points with %g < %s <= %g and %s > 0, fewer than 3\n", path, d.n,
+            o->xmin, o->xcol, o->xmax, o->ycol);
+    free(d.x), free(d.y);
+    return 1;
+  }
+  /* start: the straight line through log y against log x */
+  double *lx = malloc(sizeof(double) * d.n), *ly = malloc(sizeof(double) * d.n);
+  for (size_t i = 0; i < d.n; i++) lx[i] = log(d.x[i]), ly[i] = log(d.y[i]);
+  double c0, c1, c00, c01, c11, ss;
+  gsl_fit_linear(lx, 1, ly, 1, d.n, &c0, &c1, &c00, &c01, &c11, &ss);
+  free(lx), free(ly);
+  gsl_multifit_nlinear_fdf fdf = {power_f, power_df, NULL, d.n, 2, &d, 0, 0, 0};
+  gsl_multifit_nlinear_parameters par = gsl_multifit_nlinear_default_parameters();
+  gsl_multifit_nlinear_workspace *w = gsl_multifit_nlinear_alloc(gsl_multifit_nlinear_trust, &par, d.n, 2);
+  double start[2] = {exp(c0), c1};
+  gsl_vector_view sv = gsl_vector_view_array(start, 2);
+  gsl_multifit_nlinear_init(&sv.vector, &fdf, w);
+  int info;
+  gsl_set_error_handler_off();
+  int st = gsl_multifit_nlinear_driver(500, 1e-10, 1e-10, 0, NULL, NULL, &info, w);
+  gsl_matrix *cov = gsl_matrix_alloc(2, 2);
+  gsl_multifit_nlinear_covar(gsl_multifit_nlinear_jac(w), 0, cov);
+  double chi2;
+  gsl_blas_ddot(gsl_multifit_nlinear_residual(w), gsl_multifit_nlinear_residual(w), &chi2);
+  double s = d.n > 2 ? sqrt(chi2 / (d.n - 2)) : NAN;
+  gsl_vector *p = gsl_multifit_nlinear_position(w);
+  printf("key\tvalue\terror\n");
+  printf("a\t%.6g\t%.3g\nbeta\t%.6g\t%.3g\nn\t%zu\tnan\n", gsl_vector_get(p, 0),
+         s * sqrt(gsl_matrix_get(cov, 0, 0)), gsl_vector_get(p, 1), s * sqrt(gsl_matrix_get(cov, 1, 1)), d.n);
+  if (st != GSL_SUCCESS) fprintf(stderr, PROG ": %s: the fit did not converge (%s)\n", path, gsl_strerror(st));
+  gsl_matrix_free(cov);
+  gsl_multifit_nlinear_free(w);
+  free(d.x), free(d.y);
+  return st != GSL_SUCCESS;
+}
+
+/* ---- main --------------------------------------------------------------------------------- */
+
+static int pair(const char *opt, const char *s, double *a, double *b)
+{
+  char buf[256];
+  snprintf(buf, sizeof buf, "%s", s);
+  char *c = strchr(buf, ':');
+  if (!c) {
+    fprintf(stderr, PROG ": option %s: '%s' is not A:B\n", opt, s);
+    return 1;
+  }
+  *c = 0;
+  return wg_arg_double(opt, buf, a) || wg_arg_double(opt, c + 1, b);
+}
+
+int main(int argc, char **argv)
+{
+  if (argc < 2) return usage(stderr, 2);
+  if (!strcmp(argv[1], "-h") || !strcmp(argv[1], "--help")) return usage(stdout, 0);
+  const char *mode = argv[1];
+  options o = {.field = FIELD_TEMPERATURE, .source = SOURCE_AUTO, .t0 = -INFINITY, .t1 = INFINITY,
+               .window = 0, .t_fg = NAN, .t_sf = T_SF_DEFAULT, .ef = NAN, .eg = NAN, .fsmax = NAN,
+               .sigma = NAN, .xmin = 0, .xmax = 1};
+  char *files[argc]; /* the inputs among the arguments: at most argc - 2 */
+  int nf = 0;
+  for (int i = 2; i < argc; i++) {
+    const char *a = argv[i];
+    const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+    int val = a[0] == '-' && a[1] == '-' && strcmp(a, "--help");
+    if (val && !v) {
+      fprintf(stderr, PROG ": option %s needs a value\n", a);
+      return 2;
+    }
+    if (!strcmp(a, "-h") || !strcmp(a, "--help")) return usage(stdout, 0);
+    else if (!strcmp(a, "--source")) {
+      if (!strcmp(v, "profile")) o.source = SOURCE_PROFILE;
+      else if (!strcmp(v, "snapshots")) o.source = SOURCE_SNAPSHOTS;
+      else {
+        fprintf(stderr, PROG ": option --source: '%s' is not profile or snapshots\n", v);
+        return 2;
+      }
+    } else if (!strcmp(a, "--field")) {
+      if (!strcmp(v, "temperature")) o.field = FIELD_TEMPERATURE;
+      else if (!strcmp(v, "density")) o.field = FIELD_DENSITY;
+      else if (!strcmp(v, "bridges")) o.field = FIELD_BRIDGES;
+      else {
+        fprintf(stderr, PROG ": option --field: '%s' is not temperature, density or bridges\n", v);
+        return 2;
+      }
+    } else if (!strcmp(a, "--bins")) {
+      long nx, ny = 0;
+      char buf[64];
+      snprintf(buf, sizeof buf, "%s", v);
+      char *xp = strchr(buf, 'x');
+      if (xp) *xp = 0;
+      if (wg_arg_long(a, buf, &nx) || (xp && wg_arg_long(a, xp + 1, &ny))) return 2;
+      if (nx < 2 || (xp && ny < 2)) {
+        fprintf(stderr, PROG ": option --bins: at least 2 cells per direction\n");
+        return 2;
+      }
+      o.nx = (int)nx;
+      o.ny = (int)ny;
+    } else if (!strcmp(a, "--from")) { if (wg_arg_double(a, v, &o.t0)) return 2; }
+    else if (!strcmp(a, "--to")) { if (wg_arg_double(a, v, &o.t1)) return 2; }
+    else if (!strcmp(a, "--window")) {
+      if (wg_arg_double(a, v, &o.window)) return 2;
+      if (!(o.window > 0)) {
+        fprintf(stderr, PROG ": option --window: must be positive\n");
+        return 2;
+      }
+    }
+    else if (!strcmp(a, "--t-fg")) { if (wg_arg_double(a, v, &o.t_fg)) return 2; }
+    else if (!strcmp(a, "--t-sf")) { if (wg_arg_double(a, v, &o.t_sf)) return 2; }
+    else if (!strcmp(a, "--fsmax")) { if (wg_arg_double(a, v, &o.fsmax)) return 2; }
+    else if (!strcmp(a, "--sigma")) { if (wg_arg_double(a, v, &o.sigma)) return 2; }
+    else if (!strcmp(a, "--xmin")) { if (wg_arg_double(a, v, &o.xmin)) return 2; }
+    else if (!strcmp(a, "--xmax")) { if (wg_arg_double(a, v, &o.xmax)) return 2; }
+    else if (!strcmp(a, "--h5")) o.h5 = v;
+    else if (!strcmp(a, "--x")) o.xcol = v;
+    else if (!strcmp(a, "--y")) o.ycol = v;
+    else if (!strcmp(a, "--ends")) {
+      if (pair(a, v, &o.ef, &o.eg)) return 2;
+      if (!(o.eg != o.ef)) {
+        fprintf(stderr, PROG ": option --ends: the two E* must differ\n");
+        return 2;
+      }
+    } else if (a[0] == '-' && a[1]) {
+      fprintf(stderr, PROG ": unknown option %s\n", a);
+      return 2;
+    } else {
+      files[nf++] = argv[i];
+      continue;
+    }
+    i++;
+  }
+  if (isfinite(o.t_fg) && !(o.t_fg > 0)) {
+    fprintf(stderr, PROG ": option --t-fg: must be positive\n");
+    return 2;
+  }
+  if (nf == 0) {
+    fprintf(stderr, PROG ": %s: no input file\n", mode);
+    return 2;
+  }
+  wg_h5_quiet();
+  int rc;
+  if (!strcmp(mode, "ag")) rc = mode_ag(nf, files, &o);
+  else if (!strcmp(mode, "field")) rc = mode_field(nf, files, &o);
+  else if (!strcmp(mode, "strip")) rc = mode_strip(nf, files, &o);
+  else if (!strcmp(mode, "relax")) rc = mode_relax(nf, files, &o);
+  else if (!strcmp(mode, "spacetime")) rc = mode_spacetime(nf, files, &o);
+  else if (!strcmp(mode, "powerfit")) {
+    if (nf != 1) {
+      fprintf(stderr, PROG ": powerfit takes one table\n");
+      return 2;
+    }
+    rc = mode_powerfit(files[0], &o);
+  } else {
+    fprintf(stderr, PROG ": unknown mode '%s' (ag, field, strip, relax, spacetime, powerfit)\n", mode);
+    rc = 2;
+  }
+  return rc;
+}
