@@ -18,6 +18,7 @@
                    the far level).  Only nearly grazing pairs can need this clause; their
                    count is printed and must stay below 1 %. */
 #include "tharness.h"
+#include "ed.h"
 #include "shear.h"
 
 #include <float.h>
@@ -392,8 +393,167 @@ static void test_cell_exit(void)
   wg_cells_free(&c);
 }
 
+/* ---- the field in the engine ----------------------------------------------------------- */
+
+static int make_scene(wg_scene *sc, const char *const *keys)
+{
+  wg_scene_init(sc);
+  for (int k = 0; keys[k]; k++)
+    if (wg_scene_set_override(sc, keys[k]) != WG_OK) return WG_EINVAL;
+  return wg_scene_finish(sc);
+}
+
+/* One particle flying along x through the bins: its momentum along y grows by exactly
+   F_bin times the time spent in each bin, the field's work is its kinetic energy. */
+static void test_single_particle(void)
+{
+  const char *keys[] = {"dim=3", "n=1", "lx=8", "ly=8", "height=8", "container=periodic",
+                        "tg_init_abs=1", "seed=1", "t_end=10", "sigma_p=0", "shear_force=0.5",
+                        NULL};
+  wg_scene sc;
+  TH_CHECK(make_scene(&sc, keys) == WG_OK && sc.shear_bins == 8, "single: scene with 8 bins (%d)",
+           sc.shear_bins);
+  double r[3] = {0.5, 4, 4}, v[3] = {1, 0, 0}, rad[1] = {0.5};
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc_state(&s, &sc, 1, r, v, rad, NULL, 0) == WG_OK, "single: set up");
+  TH_CHECK(wg_ed_advance(&s, 2.0) == WG_OK, "single: advanced to t = 2");
+  /* x: 0.5 -> 2.5; bins 0 (0.5 of time), 1 (1), 2 (0.5) */
+  const double *F = s.shear->force;
+  double dt[3] = {0.5, 1, 0.5}, vy = 0, y = 4;
+  for (int k = 0; k < 3; k++) {
+    y += vy * dt[k] + 0.5 * F[k] * dt[k] * dt[k];
+    vy += F[k] * dt[k];
+  }
+  double rr[3], vv[3];
+  wg_ed_position_of(&s, 0, 2.0, rr, vv);
+  TH_CLOSE("single: momentum along y = sum of F dt", vv[1], vy, 1e-14, 1e-15);
+  TH_CLOSE("single: y on the piecewise parabola", rr[1], y, 1e-14, 0);
+  TH_CHECK(fabs(vy) > 0.3, "single: a momentum that can be wrong (%g)", vy);
+  TH_CLOSE("single: x unaffected", rr[0], 2.5, 1e-15, 0);
+  TH_CHECK(s.counts.bin_crossings == 2, "single: 2 bin crossings (%llu)", s.counts.bin_crossings);
+  TH_CLOSE("single: field work = kinetic energy gained", wg_ed_field_work(&s), 0.5 * vy * vy,
+           1e-13, 1e-15);
+  TH_CHECK(wg_ed_ledger_residual(&s) < 1e-14, "single: ledger residual %.2e",
+           wg_ed_ledger_residual(&s));
+  wg_ed_free(&s);
+}
+
+/* Shaken (3D) or free (2D periodic) wet inelastic runs under the field: the ledger closes;
+   with the field switched on and off, nothing of it acts outside [t_on, t_off). */
+static void ledger_case(const char *name, const char *const *keys, double t_end, double t_on,
+                        double t_off)
+{
+  wg_scene sc;
+  TH_CHECK(make_scene(&sc, keys) == WG_OK, "%s: scene accepted", name);
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc(&s, &sc) == WG_OK, "%s: set up", name);
+  double worst = 0, w_on = NAN, w_off = NAN;
+  unsigned long long bins_off = 0;
+  for (int k = 1; k <= 40; k++) {
+    double t = t_end * k / 40;
+    if (wg_ed_advance(&s, t) != WG_OK) {
+      TH_CHECK(0, "%s: run failed at t = %g", name, s.now);
+      break;
+    }
+    double r = wg_ed_ledger_residual(&s);
+    if (r > worst) worst = r;
+    if (t <= t_on) w_on = wg_ed_field_work(&s);
+    if (t <= t_off) {
+      w_off = wg_ed_field_work(&s);
+      bins_off = s.counts.bin_crossings;
+    }
+  }
+  TH_CHECK(s.counts.collisions > 10000 && s.counts.ruptures > 100 && s.counts.bin_crossings > 1000,
+           "%s: collisions %llu, ruptures %llu, bin crossings %llu", name, s.counts.collisions,
+           s.counts.ruptures, s.counts.bin_crossings);
+  TH_CHECK(fabs(wg_ed_field_work(&s)) > 1, "%s: the field works (%.4g)", name, wg_ed_field_work(&s));
+  TH_CHECK(worst < 1e-9, "%s: largest ledger residual %.3g < 1e-9", name, worst);
+  if (t_on > 0) TH_CHECK(w_on == 0, "%s: no work before t_on = %g (%g)", name, t_on, w_on);
+  if (t_off < t_end)
+    TH_CHECK(wg_ed_field_work(&s) == w_off && s.counts.bin_crossings == bins_off,
+             "%s: after t_off = %g no work (%.17g = %.17g) and no bin crossing (%llu = %llu)",
+             name, t_off, wg_ed_field_work(&s), w_off, s.counts.bin_crossings, bins_off);
+  wg_ed_free(&s);
+}
+
+static void test_ledger(void)
+{
+  const char *shake3d[] = {"dim=3", "n=800", "lx=14", "ly=14", "height=8", "s_crit=0.0625",
+                           "e_cb_mgs=4", "eps=0.9", "eps_wall=0.95", "gamma=15", "estar=2",
+                           "seed=6", "t_end=20", "shear_force=0.5", NULL};
+  ledger_case("3D wet shaker, field on", shake3d, 20, 0, INFINITY);
+  const char *free2d[] = {"dim=2", "n=400", "lx=40", "height=20", "container=periodic",
+                          "s_crit=0.0711", "f_b=4", "eps=0.9", "tg_init=20", "seed=3", "t_end=40",
+                          "shear_force=0.3", "shear_on=5", "shear_off=25", NULL};
+  ledger_case("2D wet periodic, field on at 5, off at 25", free2d, 40, 5, 25);
+}
+
+/* Until the field is switched on the run is the run without a field, bit for bit. */
+static void test_off_until_on(void)
+{
+  const char *with[] = {"dim=3", "n=400", "lx=12", "ly=12", "height=8", "s_crit=0.0625",
+                        "e_cb_mgs=4", "eps=0.9", "gamma=30", "estar=2", "seed=2", "t_end=10",
+                        "shear_force=1", "shear_on=3", NULL};
+  wg_scene a, b;
+  TH_CHECK(make_scene(&a, with) == WG_OK, "off until on: scene");
+  b = a;
+  b.shear_force = 0;
+  wg_ed sa, sb;
+  int ok = wg_ed_alloc(&sa, &a) == WG_OK && wg_ed_alloc(&sb, &b) == WG_OK &&
+           wg_ed_advance(&sa, 3.0) == WG_OK && wg_ed_advance(&sb, 3.0) == WG_OK;
+  long diff = 0;
+  for (long id = 0; ok && id < sa.n; id++) {
+    double ra[3], va[3], rb[3], vb[3];
+    wg_ed_position_of(&sa, id, 3.0, ra, va);
+    wg_ed_position_of(&sb, id, 3.0, rb, vb);
+    for (int k = 0; k < 3; k++) diff += ra[k] != rb[k] || va[k] != vb[k];
+  }
+  TH_CHECK(ok && diff == 0 && sa.counts.collisions == sb.counts.collisions &&
+           sa.counts.collisions > 1000,
+           "off until on: at t_on = 3 identical to the run without field (%ld differences, "
+           "%llu = %llu collisions)", diff, sa.counts.collisions, sb.counts.collisions);
+  ok = ok && wg_ed_advance(&sa, 4.0) == WG_OK && wg_ed_advance(&sb, 4.0) == WG_OK;
+  TH_CHECK(ok && sa.counts.bin_crossings > 100 && wg_ed_field_work(&sa) != 0,
+           "off until on: then the field acts (%llu bin crossings)", sa.counts.bin_crossings);
+  wg_ed_free(&sa);
+  wg_ed_free(&sb);
+}
+
+static void test_scene_errors(void)
+{
+  wg_scene sc;
+  const char *shaker2d[] = {"dim=2", "n=100", "lx=40", "height=9", "s_crit=0.07", "f_b=4",
+                            "gamma=15", "estar=1", "seed=1", "t_end=1", "shear_force=1", NULL};
+  TH_CHECK(make_scene(&sc, shaker2d) != WG_OK, "scene: a 2D shaker with a field is refused");
+  const char *order[] = {"dim=3", "n=100", "lx=10", "ly=10", "height=8", "s_crit=0.07", "f_b=4",
+                         "gamma=15", "estar=1", "seed=1", "t_end=1", "shear_force=1",
+                         "shear_on=5", "shear_off=2", NULL};
+  TH_CHECK(make_scene(&sc, order) != WG_OK, "scene: shear_off before shear_on is refused");
+  const char *bins[] = {"dim=3", "n=100", "lx=10", "ly=10", "height=8", "s_crit=0.07", "f_b=4",
+                        "gamma=15", "estar=1", "seed=1", "t_end=1", "shear_force=1",
+                        "shear_bins=2", NULL};
+  TH_CHECK(make_scene(&sc, bins) != WG_OK, "scene: shear_bins = 2 is refused");
+  const char *neg[] = {"dim=3", "n=100", "lx=10", "ly=10", "height=8", "s_crit=0.07", "f_b=4",
+                       "gamma=15", "estar=1", "seed=1", "t_end=1", "shear_force=-1", NULL};
+  TH_CHECK(make_scene(&sc, neg) != WG_OK, "scene: a negative shear_force is refused");
+  const char *td[] = {"engine=td", "dim=3", "n=100", "lx=10", "ly=10", "height=8",
+                      "s_crit=0.07", "f_b=4", "gamma=15", "estar=1", "seed=1", "t_end=1",
+                      "shear_force=1", NULL};
+  TH_CHECK(make_scene(&sc, td) != WG_OK, "scene: shear_force with engine = td is refused");
+  const char *good[] = {"dim=3", "n=100", "lx=10.4", "ly=10", "height=8", "s_crit=0.07",
+                        "f_b=4", "gamma=15", "estar=1", "seed=1", "t_end=1", "shear_force=1",
+                        NULL};
+  TH_CHECK(make_scene(&sc, good) == WG_OK && sc.shear_bins == 10 && isinf(sc.shear_off) &&
+           sc.shear_on == 0, "scene: defaults shear_bins = round(lx) = %d, on 0, off inf",
+           sc.shear_bins);
+}
+
 int main(void)
 {
+  test_scene_errors();
+  test_single_particle();
+  test_off_until_on();
+  test_ledger();
   test_special();
   test_bins();
   test_same_bin();
