@@ -1106,6 +1106,9 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user)
   int rc, only = sc->engine == WG_ENGINE_TD ? ONLY_TD : ONLY_ED;
   for (int k = 0; k < NKEYS; k++) {
     if (keys[k].only && keys[k].only != only) continue; /* the other engine's keys */
+    /* the shear field's keys only with a field: a scene without one gives the parameters
+       (and checkpoint fingerprint) it gave before the field existed */
+    if (k >= K_SHEAR_FORCE && k <= K_SHEAR_OFF && sc->shear_force == 0) continue;
     format_value(sc, k, buf, sizeof buf);
     if ((rc = fn(user, keys[k].name, buf, keys[k].unit[0] ? keys[k].unit : "1",
                  keys[k].desc)))
