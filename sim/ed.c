@@ -94,7 +94,7 @@ static void advance(wg_ed *s, long i, double t)
 /* ---------- free flight in the shear field ---------- */
 
 /* Acceleration of particle i while the field acts: gravity plus its bin's force / m. */
-static inline void accel_of(const wg_ed *s, long i, double *acc)
+static inline __attribute__((always_inline)) void accel_of(const wg_ed *s, long i, double *acc)
 {
   acc[0] = acc[1] = acc[2] = 0;
   if (s->g > 0) acc[s->up] = -s->g;
@@ -102,7 +102,8 @@ static inline void accel_of(const wg_ed *s, long i, double *acc)
 }
 
 /* Position and velocity of particle i at time t on its parabola (no wrapping). */
-static void flight_at(const wg_ed *s, long i, double t, double *r, double *v)
+static inline __attribute__((always_inline)) void flight_at(const wg_ed *s, long i, double t,
+                                                           double *r, double *v)
 {
   const wg_particle *p = &s->p[i];
   double dt = t - p->t, acc[3];
