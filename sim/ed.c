@@ -66,12 +66,23 @@ static inline double reduced_mass(const wg_ed *s, long i, long j)
   return mi * mj / (mi + mj);
 }
 
+/* The shear field's functions are kept out of line and marked cold, and their flag tested
+   as unlikely: without a field the hot paths compile nearly as before the field existed
+   (callgrind: +0.2 to +0.5 % instructions, a few predicted branches per event). */
+#define SHEARED(s) __builtin_expect((s)->sheared, 0)
+
+static void advance_sheared(wg_ed *s, long i, double t) __attribute__((cold, noinline));
+
 /* Move particle i along its trajectory to time t. */
 static void advance(wg_ed *s, long i, double t)
 {
   wg_particle *p = &s->p[i];
   double dt = t - p->t;
   if (dt == 0) return;
+  if (SHEARED(s)) {
+    advance_sheared(s, i, t);
+    return;
+  }
   for (int k = 0; k < s->dim; k++) p->r[k] += p->v[k] * dt;
   if (s->g > 0) {
     p->r[s->up] -= 0.5 * s->g * dt * dt;
@@ -80,10 +91,74 @@ static void advance(wg_ed *s, long i, double t)
   p->t = t;
 }
 
+/* ---------- free flight in the shear field ---------- */
+
+/* Acceleration of particle i while the field acts: gravity plus its bin's force / m. */
+static inline __attribute__((always_inline)) void accel_of(const wg_ed *s, long i, double *acc)
+{
+  acc[0] = acc[1] = acc[2] = 0;
+  if (s->g > 0) acc[s->up] = -s->g;
+  acc[s->shear->axis] += s->shear->force[s->bin[i]] / wg_ed_mass(s, i);
+}
+
+/* Position and velocity of particle i at time t on its parabola (no wrapping). */
+static inline __attribute__((always_inline)) void flight_at(const wg_ed *s, long i, double t,
+                                                           double *r, double *v)
+{
+  const wg_particle *p = &s->p[i];
+  double dt = t - p->t, acc[3];
+  accel_of(s, i, acc);
+  for (int k = 0; k < 3; k++) {
+    r[k] = k < s->dim ? p->r[k] + p->v[k] * dt + 0.5 * acc[k] * dt * dt : 0;
+    v[k] = k < s->dim ? p->v[k] + acc[k] * dt : 0;
+  }
+}
+
+/* Work of the bin's force on the flight of particle i from its local time to t: the force is
+   constant along the path, so it is F times the displacement along the field. */
+static double field_work_to(const wg_ed *s, long i, double t)
+{
+  const wg_particle *p = &s->p[i];
+  double dt = t - p->t, acc[3];
+  accel_of(s, i, acc);
+  int a = s->shear->axis;
+  return s->shear->force[s->bin[i]] * (p->v[a] * dt + 0.5 * acc[a] * dt * dt);
+}
+
+static void advance_sheared(wg_ed *s, long i, double t)
+{
+  ksum_add(&s->ledger.injected_field, field_work_to(s, i, t));
+  double r[3], v[3];
+  flight_at(s, i, t, r, v);
+  for (int k = 0; k < s->dim; k++) {
+    s->p[i].r[k] = r[k];
+    s->p[i].v[k] = v[k];
+  }
+  s->p[i].t = t;
+}
+
+double wg_ed_field_work(const wg_ed *s)
+{
+  if (!s->shear) return 0;
+  double w = wg_ksum_value(&s->ledger.injected_field);
+  if (s->sheared)
+    for (long i = 0; i < s->n; i++) w += field_work_to(s, i, s->now);
+  return w;
+}
+
 void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v)
 {
   const wg_particle *p = &s->p[i];
   double dt = t - p->t;
+  if (SHEARED(s)) {
+    flight_at(s, i, t, r, v);
+    for (int k = 0; k < s->dim; k++)
+      if (s->periodic[k]) {
+        r[k] = fmod(r[k], s->box[k]);
+        if (r[k] < 0) r[k] += s->box[k];
+      }
+    return;
+  }
   for (int k = 0; k < s->dim; k++) {
     r[k] = p->r[k] + p->v[k] * dt;
     v[k] = p->v[k];
@@ -274,10 +349,17 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
   }
 }
 
+static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int ncells,
+                                  candidate *best) __attribute__((cold, noinline));
+
 /* Every pair of particle i with the particles of the given cells. */
 static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncells,
                              candidate *best)
 {
+  if (SHEARED(s)) {
+    predict_pairs_sheared(s, i, cells, ncells, best);
+    return;
+  }
   probe pr;
   probe_at_now(s, i, &pr);
   const int32_t *head = s->cells.head, *next = s->cells.next;
@@ -290,6 +372,101 @@ static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncel
       for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
         if (j != i) predict_pair(s, &pr, j, best, 2);
   }
+}
+
+/* The pair (i, j) while the field acts: particles in different bins (or of different
+   masses) accelerate relative to each other, and contact and bridge edge are the roots of
+   quartics (wg_shear_pair_root); the overlap and edge rules are those of predict_pair. */
+static void predict_pair_sheared(const wg_ed *s, long i, const double *ri, const double *vi,
+                                 const double *ai, long j, candidate *best)
+{
+  double rj[3], vj[3], aj[3], dr[3] = {0, 0, 0}, dv[3] = {0, 0, 0}, da[3] = {0, 0, 0};
+  flight_at(s, j, s->now, rj, vj);
+  accel_of(s, j, aj);
+  for (int k = 0; k < s->dim; k++) {
+    dr[k] = rj[k] - ri[k];
+    dv[k] = vj[k] - vi[k];
+    da[k] = aj[k] - ai[k];
+    if (s->periodic[k]) {
+      if (dr[k] > 0.5 * s->box[k]) dr[k] -= s->box[k];
+      else if (dr[k] < -0.5 * s->box[k]) dr[k] += s->box[k];
+    }
+  }
+  double bdot = dot(dr, dv, s->dim);
+  int bonded = s->wet && wg_ed_bonded(s, i, j);
+  /* receding now and for ever: d.d' is a cubic with no negative coefficient */
+  if (!bonded && bdot >= 0 && dot(dv, da, s->dim) >= 0 &&
+      dot(dv, dv, s->dim) + dot(dr, da, s->dim) >= 0)
+    return;
+  double r2 = dot(dr, dr, s->dim);
+  double sigma = s->p[i].radius + s->p[j].radius;
+  double tau;
+  if (r2 - sigma * sigma <= 0) {
+    if (bdot < -REST_SPEED * sigma) {
+      consider(best, s->now, WG_EV_COLLISION, j);
+      return;
+    }
+  }
+  /* Only events before the best one so far matter (horizon T).  Within T the distance stays
+     within margin = |da| T^2 / 2 of the unaccelerated |dr + dv tau|, whose least value is
+     closed form and whose largest is at an end: pairs that cannot reach sigma (or the edge)
+     within T skip the quartic.  SKIP_SAFETY keeps the test clear of round-off. */
+  const double SKIP_SAFETY = 1e-9;
+  double T = best->t - s->now, a2 = dot(dv, dv, s->dim);
+  double margin = isinf(T) ? INFINITY : 0.5 * sqrt(dot(da, da, s->dim)) * T * T;
+  double tmin = bdot < 0 && a2 > 0 ? fmin(-bdot / a2, T) : 0;
+  double dmin2 = 0, dend2 = 0;
+  for (int k = 0; k < s->dim; k++) {
+    double x = dr[k] + dv[k] * tmin, y = dr[k] + dv[k] * T;
+    dmin2 += x * x;
+    dend2 += y * y;
+  }
+  double reach = sigma * (1 + SKIP_SAFETY) + margin;
+  if (!(dmin2 > reach * reach) &&
+      wg_shear_pair_root(dr, dv, da, s->dim, sigma, -1, T, &tau))
+    consider(best, s->now + tau, WG_EV_COLLISION, j);
+  if (!bonded) return;
+  double edge = sigma + s->s_crit;
+  double t;
+  if (r2 - edge * edge >= 0 && bdot > REST_SPEED * edge) {
+    t = 0;
+  } else if (r2 < edge * edge) { /* inside the well: its edge within T, if at all */
+    T = best->t - s->now;
+    margin = isinf(T) ? INFINITY : 0.5 * sqrt(dot(da, da, s->dim)) * T * T;
+    double far = sqrt(fmax(r2, isinf(T) ? INFINITY : dend2)) + margin;
+    if (far < edge * (1 - SKIP_SAFETY)) return;
+    if (!wg_shear_pair_root(dr, dv, da, s->dim, edge, 1, T, &t)) return;
+  } else {
+    int found = wg_shear_pair_root(dr, dv, da, s->dim, edge, 1, INFINITY, &t);
+    /* on (or just beyond) the edge, moving in or at rest: not before the pair moves out
+       faster than REST_SPEED */
+    double ts = wg_shear_pair_speed_time(dr, dv, da, s->dim, REST_SPEED * edge);
+    t = found ? fmax(t, ts) : ts;
+    if (isinf(t)) return;
+  }
+  consider(best, s->now + t, WG_EV_BRIDGE_EDGE, j);
+}
+
+static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int ncells,
+                                  candidate *best)
+{
+  double ri[3], vi[3], ai[3];
+  flight_at(s, i, s->now, ri, vi);
+  accel_of(s, i, ai);
+  const int32_t *head = s->cells.head, *next = s->cells.next;
+  for (int k = 0; k < ncells; k++)
+    for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
+      if (j != i) predict_pair_sheared(s, i, ri, vi, ai, j, best);
+}
+
+/* The next bin crossing (x moves linearly: the field has no x component). */
+static __attribute__((cold, noinline)) void predict_bin(const wg_ed *s, long i, candidate *best)
+{
+  const wg_particle *p = &s->p[i];
+  int dir;
+  double x = p->r[0] + p->v[0] * (s->now - p->t);
+  double tau = wg_shear_bin_exit(s->shear, s->bin[i], x, p->v[0], &dir);
+  consider(best, s->now + tau, WG_EV_BIN, dir);
 }
 
 static void predict_walls(wg_ed *s, long i, candidate *best)
@@ -324,11 +501,30 @@ static void set_phys(wg_ed *s, long i, const candidate *best)
     s->ev_count[i] = s->count[best->partner];
 }
 
+/* The next cell crossing while the field acts: each axis a parabola of its own. */
+static __attribute__((cold, noinline)) void predict_cell_sheared(wg_ed *s, long i, int skip_axis,
+                                                                 int skip_dir)
+{
+  const wg_particle *p = &s->p[i];
+  int axis, dir;
+  double acc[3];
+  accel_of(s, i, acc);
+  double t = p->t + wg_shear_cell_exit_time(&s->cells, s->cells.cell[i], p->r, p->v, acc,
+                                            s->now - p->t, skip_axis, skip_dir, &axis, &dir);
+  s->t_cell[i] = t > s->now ? t : s->now;
+  s->cell_axis[i] = (int8_t)axis;
+  s->cell_dir[i] = (int8_t)dir;
+}
+
 /* Next cell crossing; (skip_axis, skip_dir) is the face just entered through, if any. */
 static void predict_cell(wg_ed *s, long i, int skip_axis, int skip_dir)
 {
   const wg_particle *p = &s->p[i];
   int axis, dir;
+  if (SHEARED(s)) {
+    predict_cell_sheared(s, i, skip_axis, skip_dir);
+    return;
+  }
   double dt = wg_cells_exit_time(&s->cells, s->cells.cell[i], p->r, p->v, s->g, s->now - p->t,
                                  skip_axis, skip_dir, &axis, &dir);
   double t = p->t + dt;
@@ -343,6 +539,7 @@ static void predict_all(wg_ed *s, long i, int reschedule)
   candidate best = {INFINITY, WG_EV_NONE, -1};
   long stencil[27];
   if (s->nwalls) predict_walls(s, i, &best);
+  if (SHEARED(s)) predict_bin(s, i, &best);
   int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
   predict_pairs_in(s, i, stencil, m, &best);
   set_phys(s, i, &best);
@@ -532,6 +729,14 @@ static int physical_event(wg_ed *s, long i)
     s->count[i]++;
     predict_all(s, i, 1);
     return WG_OK;
+  case WG_EV_BIN:
+    /* the old bin's force acts up to the face; the new bin's from here on */
+    advance(s, i, s->now);
+    s->bin[i] = wg_shear_bin_step(s->shear, s->bin[i], (int)j);
+    s->counts.bin_crossings++;
+    s->count[i]++;
+    predict_all(s, i, 1);
+    return WG_OK;
   case WG_EV_WALL_ENTER:
     /* same trajectory, new reference point: the solver then sees the particle inside */
     advance(s, i, s->now);
@@ -573,7 +778,7 @@ static int tick(wg_ed *s)
   return WG_OK;
 }
 
-int wg_ed_advance(wg_ed *s, double t_stop)
+static int advance_events(wg_ed *s, double t_stop)
 {
   for (;;) {
     long i = wg_evqueue_top(&s->queue);
@@ -605,6 +810,28 @@ int wg_ed_advance(wg_ed *s, double t_stop)
   }
   s->now = t_stop;
   return WG_OK;
+}
+
+/* Switch the shear field on or off at time now: every particle finishes its flight under the
+   old accelerations, then all events are predicted afresh under the new ones. */
+static int switch_field(wg_ed *s, int on)
+{
+  for (long i = 0; i < s->n; i++) advance(s, i, s->now);
+  s->sheared = on;
+  return wg_ed_synchronize(s);
+}
+
+int wg_ed_advance(wg_ed *s, double t_stop)
+{
+  if (!s->shear) return advance_events(s, t_stop);
+  for (;;) { /* up to each time the field switches, then on */
+    double t_switch = s->sheared ? s->shear->t_off : s->now < s->shear->t_on ? s->shear->t_on
+                                                                           : INFINITY;
+    if (!(t_switch <= t_stop)) return advance_events(s, t_stop);
+    int st = advance_events(s, t_switch);
+    if (st == WG_OK) st = switch_field(s, !s->sheared);
+    if (st != WG_OK) return st;
+  }
 }
 
 /* Apply new[k] = old[order[k]] in place, cycle by cycle; done[] is scratch (n bytes). */
@@ -688,6 +915,8 @@ int wg_ed_synchronize(wg_ed *s)
   int st = renumber_by_cell(s);
   if (st != WG_OK) return st;
   wg_cells_rebuild(&s->cells, s->n, s->p[0].r, sizeof(wg_particle) / sizeof(double));
+  if (s->sheared)
+    for (long i = 0; i < s->n; i++) s->bin[i] = wg_shear_bin_of(s->shear, s->p[i].r[0]);
   for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
   for (long i = 0; i < s->n; i++)
     s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
@@ -719,7 +948,7 @@ double wg_ed_ledger_residual(wg_ed *s)
   double ek, ep;
   wg_ed_energy(s, &ek, &ep);
   const wg_ledger *l = &s->ledger;
-  double in = wg_ksum_value(&l->injected_wall);
+  double in = wg_ksum_value(&l->injected_wall) + wg_ed_field_work(s);
   double out = wg_ksum_value(&l->dissipated_coll) + wg_ksum_value(&l->dissipated_wall) +
                wg_ksum_value(&l->dissipated_rupt);
   double level = ek + fabs(ep);
@@ -777,6 +1006,14 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
   s->key = zalloc((size_t)n, sizeof *s->key, &fail);
   if (sc->mass_scaling) s->mass = zalloc((size_t)n, sizeof *s->mass, &fail);
   if (s->inelastic) s->t_last = zalloc((size_t)n, sizeof *s->t_last, &fail);
+  if (sc->shear_force != 0) {
+    s->shear = zalloc(1, sizeof *s->shear, &fail);
+    s->bin = zalloc((size_t)n, sizeof *s->bin, &fail);
+    /* the force acts along y in 3D and along the second axis in 2D (see shear.h) */
+    if (!fail && wg_shear_init(s->shear, sc->shear_force, sc->shear_bins, sc->lx, sc->shear_on,
+                               sc->shear_off, 1) != WG_OK)
+      fail = 1;
+  }
   if (s->wet) {
     s->bond = zalloc((size_t)n * s->bond_cap, sizeof *s->bond, &fail);
     s->nbond = zalloc((size_t)n, sizeof *s->nbond, &fail);
@@ -824,6 +1061,7 @@ int wg_ed_start(wg_ed *s, double t0)
   int st = setup_cells(s);
   if (st != WG_OK) return st;
   s->now = t0;
+  s->sheared = wg_shear_active(s->shear, t0);
   st = wg_ed_synchronize(s);
   if (st != WG_OK) return st;
   double ek, ep;
@@ -896,6 +1134,7 @@ size_t wg_ed_bytes(const wg_ed *s)
   if (s->mass) bytes += n * sizeof *s->mass;
   if (s->t_last) bytes += n * sizeof *s->t_last;
   if (s->wet) bytes += n * ((size_t)s->bond_cap * sizeof *s->bond + sizeof *s->nbond);
+  if (s->shear) bytes += n * sizeof *s->bin + (size_t)s->shear->nbins * sizeof(double);
   return bytes;
 }
 
@@ -903,7 +1142,9 @@ void wg_ed_free(wg_ed *s)
 {
   free(s->p); free(s->id); free(s->slot); free(s->count); free(s->t_phys); free(s->ev_partner); free(s->ev_count);
   free(s->ev_type); free(s->t_cell); free(s->cell_axis); free(s->cell_dir); free(s->key);
-  free(s->mass); free(s->t_last); free(s->bond); free(s->nbond);
+  free(s->mass); free(s->t_last); free(s->bond); free(s->nbond); free(s->bin);
+  if (s->shear) wg_shear_free(s->shear);
+  free(s->shear);
   wg_cells_free(&s->cells);
   wg_evqueue_free(&s->queue);
   memset(s, 0, sizeof *s);

@@ -10,6 +10,7 @@
 #include "cells.h"
 #include "evqueue.h"
 #include "scene.h"
+#include "shear.h"
 #include "wall.h"
 
 /* One particle: 64 bytes, one cache line. */
@@ -26,7 +27,8 @@ typedef enum {
   WG_EV_BRIDGE_EDGE,   /* bonded pair reaches gap s_crit: rupture or reflection */
   WG_EV_WALL_HIT,      /* contact with floor (partner 0) or lid (partner 1) */
   WG_EV_WALL_ENTER,    /* enters a wall's reach: solve for the exact contact then */
-  WG_EV_CELL           /* cell crossing (bookkeeping) */
+  WG_EV_CELL,          /* cell crossing (bookkeeping) */
+  WG_EV_BIN            /* crossing into the next bin of the shear field (partner: +1 / -1) */
 } wg_event_type;
 
 /* Counts of every event type; the ledger of energy. */
@@ -34,7 +36,8 @@ typedef struct wg_counts {
   unsigned long long collisions, captures, ruptures, reflections, wall_hits, wall_enters,
       cell_crossings, stale,  /* stale: popped predictions whose partner had moved on */
       rigid,                  /* collisions at one instant in a rigid cluster (RIGID_TIME) */
-      grazing;                /* bridge reflections raised to GRAZING_ANGLE */
+      grazing,                /* bridge reflections raised to GRAZING_ANGLE */
+      bin_crossings;          /* crossings between the shear field's bins */
 } wg_counts;
 
 /* Energy ledger [m g d], compensated (Kahan) sums. */
@@ -44,6 +47,7 @@ typedef struct wg_ledger {
   wg_ksum dissipated_coll;   /* lost in inelastic particle collisions */
   wg_ksum dissipated_wall;   /* lost in inelastic wall collisions */
   wg_ksum dissipated_rupt;   /* taken by bridge ruptures, E_cb each */
+  wg_ksum injected_field;    /* work of the shear field, booked when a particle moves */
   double e0;                 /* kinetic + potential energy at t = 0 */
   double scale;              /* largest kinetic + |potential| energy seen; for the residual */
 } wg_ledger;
@@ -63,6 +67,13 @@ typedef struct wg_ed {
   int inelastic;               /* eps < 1 or eps_wall < 1: TC bookkeeping */
   double eps, eps_wall, tc, grazing_angle;
   double wall_min_speed;       /* least speed of a particle leaving a wall (see wall_collide) */
+  /* The cosine shear field (shear.h): NULL when the scene has none.  While it acts
+     (sheared = 1) every free flight, prediction and the ledger use each particle's own
+     acceleration (gravity + its bin's force / m) in functions of their own; sheared = 0
+     runs exactly today's code. */
+  wg_shear *shear;
+  int sheared;
+  int32_t *bin;                /* bin of each particle (with a field) */
 
   /* Particles are stored in slots, renumbered in cell order at every synchronisation so that
      neighbours sit close in memory; id[slot] is the particle's fixed identity (input order,
@@ -152,6 +163,10 @@ void wg_ed_energy(const wg_ed *s, double *kinetic, double *potential);
 double wg_ksum_value(const wg_ksum *k);
 /* |E(now) - E(0) - injected + dissipated| / energy scale. */
 double wg_ed_ledger_residual(wg_ed *s);
+
+/* Work done by the shear field since t = 0 up to now (booked plus the flights in progress)
+   [m g d]; 0 without a field. */
+double wg_ed_field_work(const wg_ed *s);
 
 /* Bytes allocated by the engine (particles, events, queue, cells, bonds). */
 size_t wg_ed_bytes(const wg_ed *s);

@@ -25,12 +25,13 @@ typedef struct series_column {
   const char *td_description; /* the time-driven engine's meaning, where it differs */
 } series_column;
 
-enum { ONLY_ED = 1, ONLY_TD = 2 };
+enum { ONLY_ED = 1, ONLY_TD = 2, ONLY_SHEAR = 4 /* event-driven, with a shear field */ };
 
 enum {
   COL_TIME, COL_KINETIC, COL_POTENTIAL, COL_INJ_WALL, COL_DIS_COLL, COL_DIS_WALL, COL_DIS_RUPT,
   COL_RESIDUAL, COL_TG, COL_BRIDGES, COL_COLLISIONS, COL_CAPTURES, COL_RUPTURES,
   COL_REFLECTIONS, COL_WALL_HITS, COL_WALL_ENTERS, COL_CELL_CROSSINGS, COL_STEPS, COL_REBUILDS,
+  COL_FIELD_WORK, /* last: checkpoints written before it existed have one column less */
   NCOL
 };
 
@@ -60,11 +61,13 @@ static const series_column columns[NCOL] = {
     {"cell_crossings", "1", "cell crossings (bookkeeping events) since t = 0", ONLY_ED, NULL},
     {"steps", "1", "time steps since t = 0", ONLY_TD, NULL},
     {"list_rebuilds", "1", "neighbour-list rebuilds since t = 0", ONLY_TD, NULL},
+    {"field_work", "m d+2 tau-2", "work done on the particles by the shear field since t = 0 (its bins' forces times the displacements along them)", ONLY_SHEAR, NULL},
 };
 
 static int is_td(const wg_run *run) { return run->sc->engine == WG_ENGINE_TD; }
 static int column_used(const wg_run *run, int c)
 {
+  if (columns[c].only == ONLY_SHEAR) return !is_td(run) && run->sc->shear_force != 0;
   return !columns[c].only || columns[c].only == (is_td(run) ? ONLY_TD : ONLY_ED);
 }
 
@@ -207,6 +210,7 @@ static int sample_series(wg_run *run)
   row[COL_WALL_HITS] = (double)s->counts.wall_hits;
   row[COL_WALL_ENTERS] = (double)s->counts.wall_enters;
   row[COL_CELL_CROSSINGS] = (double)s->counts.cell_crossings;
+  row[COL_FIELD_WORK] = wg_ed_field_work(s);
   run->rows++;
   return WG_OK;
 }
@@ -361,6 +365,13 @@ static int ckpt_write_ed(wg_run *run, hid_t f)
                        s->ledger.e0, s->ledger.scale};
   hsize_t d10[1] = {10};
   st |= wg_h5_write(f, "run/ledger", H5T_NATIVE_DOUBLE, 1, d10, ledger, "m d+2 tau-2", "ledger sums");
+  if (s->shear) {
+    double field[3] = {s->ledger.injected_field.s, s->ledger.injected_field.c,
+                       (double)s->counts.bin_crossings};
+    hsize_t d3f[1] = {3};
+    st |= wg_h5_write(f, "run/field", H5T_NATIVE_DOUBLE, 1, d3f, field, "m d+2 tau-2, 1",
+                      "shear field's work (sum, compensation), bin crossings");
+  }
   unsigned long long ws[3] = {s->wall_stats.calls, s->wall_stats.pieces, s->wall_stats.evaluations};
   hsize_t d3[1] = {3};
   st |= wg_h5_write(f, "run/wall_stats", H5T_NATIVE_ULLONG, 1, d3, ws, "1", "wall solver work");
@@ -544,14 +555,20 @@ static int ckpt_load_ed(wg_run *run, hid_t f, long n, double now)
   if (st == WG_OK) st = read_into(f, ck, "run/counts", H5T_NATIVE_ULLONG, counts, 10);
   if (st == WG_OK) st = read_into(f, ck, "run/ledger", H5T_NATIVE_DOUBLE, ledger, 10);
   if (st == WG_OK) st = read_into(f, ck, "run/wall_stats", H5T_NATIVE_ULLONG, ws, 3);
+  double field[3] = {0, 0, 0};
+  if (st == WG_OK && s->shear) st = read_into(f, ck, "run/field", H5T_NATIVE_DOUBLE, field, 3);
   if (st != WG_OK) return st;
   s->counts = (wg_counts){counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7], counts[8],
-               counts[9]};
+               counts[9], (unsigned long long)field[2]};
   s->wall_stats = (wg_wall_stats){ws[0], ws[1], ws[2]};
   st = wg_ed_start(s, now);
   if (st != WG_OK) return st;
-  s->ledger = (wg_ledger){{ledger[0], ledger[1]}, {ledger[2], ledger[3]}, {ledger[4], ledger[5]},
-                          {ledger[6], ledger[7]}, ledger[8], ledger[9]};
+  s->ledger = (wg_ledger){.injected_wall = {ledger[0], ledger[1]},
+                          .dissipated_coll = {ledger[2], ledger[3]},
+                          .dissipated_wall = {ledger[4], ledger[5]},
+                          .dissipated_rupt = {ledger[6], ledger[7]},
+                          .injected_field = {field[0], field[1]}, .e0 = ledger[8],
+                          .scale = ledger[9]};
   return WG_OK;
 }
 
@@ -639,12 +656,17 @@ static int ckpt_load_observers(wg_run *run, hid_t f)
   int rank;
   hsize_t dims[8] = {0};
   if (st == WG_OK) st = wg_h5_dims(f, "run/series", &rank, dims);
-  if (st == WG_OK && (rank != 2 || dims[1] != NCOL)) st = WG_EIO;
+  /* a checkpoint from before field_work (the last column) has one column less */
+  if (st == WG_OK && (rank != 2 || (dims[1] != NCOL && dims[1] != NCOL - 1))) st = WG_EIO;
   if (st == WG_OK) {
+    size_t width = dims[1];
     run->rows = run->cap = dims[0];
-    run->series = malloc(sizeof(double) * (dims[0] ? dims[0] : 1) * NCOL);
+    run->series = calloc((dims[0] ? dims[0] : 1) * NCOL, sizeof(double));
     if (!run->series) st = WG_ENOMEM;
-    else if (dims[0]) st = read_into(f, ck, "run/series", H5T_NATIVE_DOUBLE, run->series, dims[0] * NCOL);
+    else if (dims[0]) st = read_into(f, ck, "run/series", H5T_NATIVE_DOUBLE, run->series, dims[0] * width);
+    for (size_t r = dims[0]; st == WG_OK && width < NCOL && r-- > 0;) /* spread the rows out */
+      for (size_t c = NCOL; c-- > 0;)
+        run->series[r * NCOL + c] = c < width ? run->series[r * width + c] : 0;
   }
   int bins = run->prof.bins > 0 ? run->prof.bins : 1;
   if (st == WG_OK) st = read_into(f, ck, "run/prof_count", H5T_NATIVE_DOUBLE, run->prof.count, (hsize_t)bins);

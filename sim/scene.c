@@ -67,6 +67,7 @@ enum {
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT, K_STALL_RATE, K_STALL_ACTION,
+  K_SHEAR_FORCE, K_SHEAR_BINS, K_SHEAR_ON, K_SHEAR_OFF,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
   K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, K_INTEGRATOR, K_MU, K_MU_WALL, K_KT_RATIO,
   K_GT_RATIO, K_MU_ROLL, NKEYS
@@ -193,6 +194,18 @@ static const key_desc keys[NKEYS] = {
   [K_STALL_ACTION] = {"stall_action", T_ENUM, OFF(stall_action), 0, 1, 0, DEF_VALUE,
                       WG_STALL_WARN, NULL, "", "what the stall watch does: warn and go on, or stop the run "
                       "(error, no run file)", stall_words, 0, 0, ONLY_ED, 1},
+  [K_SHEAR_FORCE] = {"shear_force", T_DOUBLE, OFF(shear_force), 0, INF, MAX_EXCL, DEF_VALUE, 0,
+                     NULL, "m g", "F_smax of the cosine shear field F(x) = F_smax cos(2 pi x / "
+                     "lx) (Eq. 2.20), along y (3D) or z (2D, periodic container only); 0 = "
+                     "no field", NULL, 0, 0, ONLY_ED},
+  [K_SHEAR_BINS] = {"shear_bins", T_INT, OFF(shear_bins), 3, 1000000, 0, DEF_COND, 0,
+                    "round(lx/d)", "", "bins of the field across lx (each acts with the "
+                    "value at its centre)", NULL, 0, 0, ONLY_ED},
+  [K_SHEAR_ON] = {"shear_on", T_DOUBLE, OFF(shear_on), 0, INF, MAX_EXCL, DEF_VALUE, 0, NULL,
+                  "sqrt(d/g)", "time the shear field is switched on", NULL, 0, 0, ONLY_ED},
+  [K_SHEAR_OFF] = {"shear_off", T_DOUBLE, OFF(shear_off), 0, INF, MIN_EXCL, DEF_VALUE, INF,
+                   NULL, "sqrt(d/g)", "time it is switched off (relaxation, Fig. 5.13); inf "
+                   "= never", NULL, 0, 0, ONLY_ED},
   /* time-driven engine (engine = td) */
   [K_CONTACT] = {"contact", T_ENUM, OFF(contact_law), 0, 1, 0, DEF_VALUE, 0, NULL, "",
                  "normal contact law: linear spring-dashpot (restitution eps) or Hertz "
@@ -781,6 +794,25 @@ static int resolve_gravity(wg_scene *sc)
   return WG_OK;
 }
 
+/* The shear field: its bins (default one per diameter) and its times; in 2D it acts along
+   the second axis, which must then be periodic (no walls to meet a force along them). */
+static int resolve_shear(wg_scene *sc)
+{
+  if (sc->shear_force == 0) return WG_OK;
+  if (sc->dim == 2 && sc->container != WG_CONTAINER_PERIODIC)
+    return pair_error(sc, K_SHEAR_FORCE, K_CONTAINER, "in 2D the field acts along z, between "
+                      "the walls of a shaker: use container = periodic (or dim = 3, where it "
+                      "acts along y)");
+  if (!given(sc, K_SHEAR_BINS)) {
+    double b = round(sc->lx);
+    sc->shear_bins = b < 3 ? 3 : b > 1000000 ? 1000000 : (int)b;
+  }
+  if (!(sc->shear_off > sc->shear_on))
+    return pair_error(sc, K_SHEAR_OFF, K_SHEAR_ON, "the field must be switched off after it "
+                      "is switched on (%g <= %g)", sc->shear_off, sc->shear_on);
+  return WG_OK;
+}
+
 /* Keys of the other engine are refused; the time-driven engine's derived values:
    the Willett rupture distance (Eq. 2.10, before resolve_bridge), the time step and Hertz's K. */
 static int resolve_engine(wg_scene *sc)
@@ -984,7 +1016,7 @@ int wg_scene_finish(wg_scene *sc)
   if ((rc = check_required(sc)) || (rc = resolve_box(sc)) || (rc = resolve_gravity(sc)) ||
       (rc = resolve_engine(sc)) || (rc = resolve_bridge(sc)) || (rc = resolve_driving(sc)) ||
       (rc = resolve_temperature(sc)) || (rc = check_fill(sc)) || (rc = resolve_output_times(sc)) ||
-      (rc = check_packing(sc)))
+      (rc = check_packing(sc)) || (rc = resolve_shear(sc)))
     return rc;
   return WG_OK;
 }
@@ -1074,6 +1106,9 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user)
   int rc, only = sc->engine == WG_ENGINE_TD ? ONLY_TD : ONLY_ED;
   for (int k = 0; k < NKEYS; k++) {
     if (keys[k].only && keys[k].only != only) continue; /* the other engine's keys */
+    /* the shear field's keys only with a field: a scene without one gives the parameters
+       (and checkpoint fingerprint) it gave before the field existed */
+    if (k >= K_SHEAR_FORCE && k <= K_SHEAR_OFF && sc->shear_force == 0) continue;
     format_value(sc, k, buf, sizeof buf);
     if ((rc = fn(user, keys[k].name, buf, keys[k].unit[0] ? keys[k].unit : "1",
                  keys[k].desc)))

@@ -50,6 +50,10 @@ typedef struct wg_scene {
   double stall_rate;   /* stall_rate: physical events per particle and unit time above which an
                           event-driven run warns that it crawls; 0 = never (default 1000) */
   int stall_action;    /* stall_action = warn | stop (WG_STALL_WARN / WG_STALL_STOP) */
+  double shear_force;  /* shear_force: F_smax of the cosine shear field, Eq. 2.20 [m g]; 0 = none */
+  int shear_bins;      /* shear_bins: bins of the field across lx (default round(lx / d)) */
+  double shear_on;     /* shear_on: time the field is switched on (0) */
+  double shear_off;    /* shear_off: time it is switched off (inf) */
 
   /* time-driven engine (engine = td) */
   int contact_law;     /* contact = linear | hertz (WG_CONTACT_LINEAR / _HERTZ, contact.h) */

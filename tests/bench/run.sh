@@ -42,6 +42,15 @@ echo "== cost per event against N (gas3d, phi = 0.3)"
 for n in 1000 10000 100000 1000000; do
   run "d_gas3d_N$n" "$scenes/gas3d.ini" n=$n t_end=$(awk -v n=$n "BEGIN { print 2e6 / n }")
 done
+echo "== shear field (issue 42): cost of the hooks when the field is absent or off, and with it on"
+# the same 3D wet shaker three times in a row: no field; a field that is never switched on
+# (every hook's flag is tested, nothing else runs); the field on.  Ratios against the first.
+sh3d="$scenes/shake3d_5_2c.ini t_end=10 dt_checkpoint=0"
+run "e_shake3d_no_field"     $sh3d
+run "f_shake3d_field_never_on" $sh3d shear_force=0.5 shear_on=1e9
+run "g_shake3d_field_on"     $sh3d shear_force=0.5
+awk -F'\t' '$1 ~ /^[efg]_shake3d/ { w[substr($1, 1, 1)] = $5 }
+  END { printf "shear: wall time never-on / no field = %.3f, on / no field = %.3f\n", w["f"] / w["e"], w["g"] / w["e"] }' "$tsv" | tee "$out/bench_shear.txt"
 echo "== exact wall solver against the brute-force scan at T_driv/1000 (same trajectories, same run)"
 "$benchdir/bench_wall" | tee "$out/bench_wall.tsv"
 echo "== time-driven engine: particle-steps/s of a 3D bed of 1e4 spheres; cost against event-driven for one state"
