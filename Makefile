@@ -118,7 +118,7 @@ bench: deps
 
 # Figures: make fig3_2 [PROFILE=quick|full]; each is experiments/<id>/.
 PROFILE ?= quick
-FIGURES := $(notdir $(wildcard experiments/fig*))
+FIGURES := $(notdir $(patsubst %/,%,$(wildcard experiments/fig*/)))
 .PHONY: $(FIGURES) figures check-figures $(addprefix figure-,$(FIGURES)) figure-tools
 # one build of the tools however many figures are asked for (make -j2 fig3_4a fig3_9), and a
 # figure that borrows another's runs after that one (make -j2 fig3_3 fig3_4atd would otherwise
