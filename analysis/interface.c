@@ -41,7 +41,7 @@
 #define MAX_COLS 64
 
 enum field_kind { FIELD_TEMPERATURE, FIELD_DENSITY, FIELD_BRIDGES };
-enum source_kind { SOURCE_AUTO, SOURCE_PROFILE, SOURCE_SNAPSHOTS };
+enum source_kind { SOURCE_AUTO, SOURCE_PROFILE, SOURCE_SNAPSHOTS, SOURCE_MAPS };
 enum phase { PH_GAS = 0, PH_FLUID = 1, PH_SOLID = 2 };
 
 typedef struct options {
@@ -107,10 +107,13 @@ static int usage(FILE *o, int rc)
     "                      over xmin < x <= xmax (default 0 < x <= 1): rows key value error\n"
     "                      a, beta, n (errors scaled by sqrt(chi^2/dof))\n"
     "Options:\n"
-    "  --source profile|snapshots  the run's time-averaged profile (2D runs with profile_bins;\n"
-    "                      the default there) or its snapshots (default otherwise; 3D needs them)\n"
+    "  --source profile|maps|snapshots  where the lateral field comes from: the run's\n"
+    "                      time-averaged profile (2D runs with profile_bins; the default there\n"
+    "                      without --window), its lateral maps (runs with map_bins: windows of\n"
+    "                      dt_map, cells map_bins x map_bins_y; the default when present) or\n"
+    "                      its particle snapshots (cells from --bins)\n"
     "  --bins NX[xNY]      cells of the snapshot grid (default: about 4 d wide)\n"
-    "  --from T, --to T    averaging window over snapshots (default: all snapshots)\n"
+    "  --from T, --to T    averaging window over frames (default: all frames)\n"
     "  --window W          ag, field, strip: one row (set) per window [t, t + W) of snapshots\n"
     "                      from --from on (one cut pooled over every window of every run);\n"
     "                      columns t_from, t_to give the snapshots' times averaged over\n"
@@ -313,6 +316,115 @@ static int read_snapshots(hid_t f, field *fd, const snaps *s, hsize_t k0, hsize_
   return rc;
 }
 
+/* The lateral maps (wetgran-run's /observables/maps, keys map_bins, dt_map): frames of
+   window averages.  Frames k0 <= k < k1 are averaged: densities plainly, T_g weighted by
+   the number of particles each frame's cell held. */
+#define MAPS "/observables/maps/"
+static int maps_times(hid_t f, const char *file, double **t, hsize_t *n)
+{
+  static const char *p[] = {MAPS "number_density/value", MAPS "bridge_density/value",
+                            MAPS "temperature/value", MAPS "number_density/time"};
+  *t = NULL;
+  *n = 0;
+  for (int k = 0; k < 4; k++)
+    if (need(f, file, p[k], "(a run without map_bins: use --source snapshots)")) return 1;
+  int rank;
+  hsize_t dims[8];
+  if (wg_h5_dims(f, p[3], &rank, dims) != WG_OK || rank != 1) return 1;
+  *n = dims[0];
+  if (*n == 0) {
+    fprintf(stderr, PROG ": %s: %s: no frames (a run shorter than one dt_map)\n", file, p[3]);
+    return 1;
+  }
+  *t = malloc(sizeof(double) * *n);
+  return !*t || wg_h5_read(f, p[3], H5T_NATIVE_DOUBLE, *t);
+}
+
+static int read_maps(hid_t f, field *fd, const options *o, long frame)
+{
+  double *t = NULL;
+  hsize_t nt = 0;
+  int rank, rc = maps_times(f, fd->file, &t, &nt);
+  hsize_t dims[8];
+  if (!rc && (wg_h5_dims(f, MAPS "number_density/value", &rank, dims) != WG_OK ||
+              rank != (fd->dim == 3 ? 3 : 2))) {
+    fprintf(stderr, PROG ": %s: " MAPS "number_density/value: not frames x [ny x] nx\n", fd->file);
+    rc = 1;
+  }
+  if (!rc) {
+    fd->nx = (int)dims[rank - 1];
+    fd->ny = fd->dim == 3 ? (int)dims[1] : 1;
+    if ((o->nx > 0 && o->nx != fd->nx) || (fd->dim == 3 && o->ny > 0 && o->ny != fd->ny)) {
+      fprintf(stderr, PROG ": %s: the maps have %dx%d cells (map_bins of the run); --bins applies "
+              "to --source snapshots\n", fd->file, fd->nx, fd->ny);
+      rc = 1;
+    }
+  }
+  if (!rc && (fd->nx < 2 || field_alloc(fd))) {
+    fprintf(stderr, PROG ": %s: maps of fewer than 2 cells along x\n", fd->file);
+    rc = 1;
+  }
+  hsize_t k0 = 0, k1 = nt;
+  if (!rc && frame >= 0) {
+    if ((hsize_t)frame >= nt) {
+      fprintf(stderr, PROG ": %s: " MAPS "number_density: no frame %ld (%llu frames)\n",
+              fd->file, frame, (unsigned long long)nt);
+      rc = 1;
+    }
+    k0 = (hsize_t)frame;
+    k1 = k0 + 1;
+  } else if (!rc) {
+    while (k0 < nt && t[k0] < o->t0) k0++;
+    k1 = k0;
+    while (k1 < nt && t[k1] <= o->t1) k1++;
+    if (k1 == k0) {
+      fprintf(stderr, PROG ": %s: no map frame in the window\n", fd->file);
+      rc = 1;
+    }
+  }
+  size_t c = (size_t)fd->nx * fd->ny;
+  double *buf = rc ? NULL : malloc(sizeof(double) * c * 3);
+  double *wt = rc ? NULL : calloc(c, sizeof(double));
+  if (!rc && (!buf || !wt)) rc = 1;
+  for (size_t j = 0; j < c && !rc; j++) fd->n[j] = fd->ncb[j] = fd->tg[j] = 0;
+  for (hsize_t k = k0; k < k1 && !rc; k++) {
+    if (wg_h5_read_rows(f, MAPS "number_density/value", H5T_NATIVE_DOUBLE, k, 1, buf) ||
+        wg_h5_read_rows(f, MAPS "bridge_density/value", H5T_NATIVE_DOUBLE, k, 1, buf + c) ||
+        wg_h5_read_rows(f, MAPS "temperature/value", H5T_NATIVE_DOUBLE, k, 1, buf + 2 * c)) {
+      rc = 1;
+      break;
+    }
+    for (size_t j = 0; j < c; j++) {
+      fd->n[j] += buf[j];
+      fd->ncb[j] += buf[c + j];
+      if (buf[j] > 0 && isfinite(buf[2 * c + j])) {
+        fd->tg[j] += buf[j] * buf[2 * c + j];
+        wt[j] += buf[j];
+      }
+    }
+  }
+  for (size_t j = 0; j < c && !rc; j++) {
+    fd->n[j] /= (double)(k1 - k0);
+    fd->ncb[j] /= (double)(k1 - k0);
+    fd->tg[j] = wt[j] > 0 ? fd->tg[j] / wt[j] : NAN;
+  }
+  if (!rc) {
+    fd->t_from = t[k0]; /* the frames' times: their windows' centres */
+    fd->t_to = t[k1 - 1];
+  }
+  free(buf), free(wt), free(t);
+  return rc;
+}
+
+/* Which record of the lateral plane a field is read from. */
+static enum source_kind pick_source(hid_t f, const field *fd, const options *o, long frame)
+{
+  if (o->source != SOURCE_AUTO) return o->source;
+  if (fd->dim == 2 && frame < 0 && !(o->window > 0) && wg_h5_exists(f, "/observables/profiles/number_density"))
+    return SOURCE_PROFILE;
+  return wg_h5_exists(f, MAPS "number_density/value") ? SOURCE_MAPS : SOURCE_SNAPSHOTS;
+}
+
 static int run_head(hid_t f, field *fd)
 {
   if (param(f, fd->file, "e_cb", &fd->e_cb, 1)) return 1;
@@ -344,12 +456,11 @@ static int load_field(const char *file, const options *o, field *fd, long frame)
   hid_t f = wg_run_open(file);
   if (f < 0) return 1;
   int rc = run_head(f, fd);
-  enum source_kind src = o->source;
-  if (!rc && src == SOURCE_AUTO)
-    src = fd->dim == 2 && frame < 0 && !(o->window > 0) && wg_h5_exists(f, "/observables/profiles/number_density")
-              ? SOURCE_PROFILE : SOURCE_SNAPSHOTS;
+  enum source_kind src = rc ? SOURCE_AUTO : pick_source(f, fd, o, frame);
   if (!rc && src == SOURCE_PROFILE) {
     rc = read_profile(f, fd);
+  } else if (!rc && src == SOURCE_MAPS) {
+    rc = read_maps(f, fd, o, frame);
   } else if (!rc) {
     snaps s = {0};
     rc = snaps_open(f, file, &s);
@@ -585,17 +696,28 @@ static agrow measure_ag(const field *fd)
   return a;
 }
 
-/* The snapshot times of a run (for --window). */
-static int run_times(const char *file, double **t, hsize_t *n)
+/* The frame times of a run (for --window, relax, spacetime): of its maps or snapshots,
+   whichever load_field reads frame by frame. */
+static int run_times(const char *file, const options *o, double **t, hsize_t *n)
 {
+  *t = NULL;
+  *n = 0;
   hid_t f = wg_run_open(file);
   if (f < 0) return 1;
-  snaps s = {0};
-  int rc = snaps_open(f, file, &s);
+  field head = {.file = file};
+  options per_frame = *o;
+  per_frame.window = 1; /* never the time-averaged profile */
+  int rc = run_head(f, &head);
+  if (!rc && pick_source(f, &head, &per_frame, 0) == SOURCE_MAPS) {
+    rc = maps_times(f, file, t, n);
+  } else if (!rc) {
+    snaps s = {0};
+    rc = snaps_open(f, file, &s);
+    free(s.mass);
+    *t = s.time;
+    *n = s.frames;
+  }
   wg_h5_close(f);
-  free(s.mass);
-  *t = s.time;
-  *n = s.frames;
   return rc;
 }
 
@@ -612,7 +734,7 @@ static int load_all(int nf, char **files, const options *o, field **out, int *nf
     double *t = NULL;
     hsize_t nt = 0;
     if (o->window > 0) {
-      if (run_times(files[r], &t, &nt)) {
+      if (run_times(files[r], o, &t, &nt)) {
         free(t);
         return 1;
       }
@@ -910,13 +1032,13 @@ static int mode_strip(int nf, char **files, const options *o)
 static int mode_relax(int nf, char **files, const options *o)
 {
   /* the frames of the first run set the times; every run must have them */
-  hid_t f = wg_run_open(files[0]);
-  if (f < 0) return 1;
-  snaps s0 = {0};
-  int rc = snaps_open(f, files[0], &s0);
-  wg_h5_close(f);
-  if (rc) return 1;
-  hsize_t nt = s0.frames;
+  double *t0 = NULL;
+  hsize_t nt = 0;
+  int rc = run_times(files[0], o, &t0, &nt);
+  if (rc) {
+    free(t0);
+    return 1;
+  }
   double *sum = calloc(nt, sizeof(double)), *sum2 = calloc(nt, sizeof(double));
   int *cnt = calloc(nt, sizeof(int));
   if (!sum || !sum2 || !cnt) rc = 1;
@@ -948,9 +1070,9 @@ static int mode_relax(int nf, char **files, const options *o)
     for (hsize_t k = 0; k < nt; k++) {
       if (!cnt[k]) continue;
       double mean = sum[k] / cnt[k], var = cnt[k] > 1 ? (sum2[k] - cnt[k] * mean * mean) / (cnt[k] - 1) : NAN;
-      printf("%.10g\t%.6g\t%.3g\t%d\n", s0.time[k], mean, var > 0 ? sqrt(var) : 0.0, cnt[k]);
+      printf("%.10g\t%.6g\t%.3g\t%d\n", t0[k], mean, var > 0 ? sqrt(var) : 0.0, cnt[k]);
       if (mean > 0 && lt && ly) {
-        lt[m] = s0.time[k];
+        lt[m] = t0[k];
         ly[m++] = log(mean);
       }
     }
@@ -966,7 +1088,7 @@ static int mode_relax(int nf, char **files, const options *o)
       printf("# fewer than 3 times with a strip: no fit\n");
     free(lt), free(ly);
   }
-  free(sum), free(sum2), free(cnt), free(s0.time), free(s0.mass);
+  free(sum), free(sum2), free(cnt), free(t0);
   return rc;
 }
 
@@ -978,17 +1100,18 @@ static int mode_spacetime(int nf, char **files, const options *o)
     fprintf(stderr, PROG ": spacetime takes one run\n");
     return 2;
   }
-  hid_t f = wg_run_open(files[0]);
-  if (f < 0) return 1;
-  snaps s = {0};
-  int rc = snaps_open(f, files[0], &s);
-  wg_h5_close(f);
-  if (rc) return 1;
+  double *tk = NULL;
+  hsize_t nt = 0;
+  int rc = run_times(files[0], o, &tk, &nt);
+  if (rc) {
+    free(tk);
+    return 1;
+  }
   printf("t\tx\tnumber_density\tbridge_density\n");
-  for (hsize_t k = 0; !rc && k < s.frames; k++) {
-    if (s.time[k] < o->t0 || s.time[k] > o->t1) continue;
+  for (hsize_t k = 0; !rc && k < nt; k++) {
+    if (tk[k] < o->t0 || tk[k] > o->t1) continue;
     options one = *o;
-    one.ny = 1;
+    if (one.source != SOURCE_MAPS) one.ny = 1; /* snapshots: one cell across y */
     field fd;
     rc = load_field(files[0], &one, &fd, (long)k);
     if (!rc) {
@@ -999,13 +1122,13 @@ static int mode_spacetime(int nf, char **files, const options *o)
           n += fd.n[(size_t)y * fd.nx + x];
           b += fd.ncb[(size_t)y * fd.nx + x];
         }
-        printf("%.10g\t%.6g\t%.6g\t%.6g\n", s.time[k], (x + 0.5) * fd.lx / fd.nx, n / fd.ny, b / fd.ny);
+        printf("%.10g\t%.6g\t%.6g\t%.6g\n", tk[k], (x + 0.5) * fd.lx / fd.nx, n / fd.ny, b / fd.ny);
       }
       printf("\n");
     }
     field_free(&fd);
   }
-  free(s.time), free(s.mass);
+  free(tk);
   return rc;
 }
 
@@ -1154,9 +1277,10 @@ int main(int argc, char **argv)
     if (!strcmp(a, "-h") || !strcmp(a, "--help")) return usage(stdout, 0);
     else if (!strcmp(a, "--source")) {
       if (!strcmp(v, "profile")) o.source = SOURCE_PROFILE;
+      else if (!strcmp(v, "maps")) o.source = SOURCE_MAPS;
       else if (!strcmp(v, "snapshots")) o.source = SOURCE_SNAPSHOTS;
       else {
-        fprintf(stderr, PROG ": option --source: '%s' is not profile or snapshots\n", v);
+        fprintf(stderr, PROG ": option --source: '%s' is not profile, maps or snapshots\n", v);
         return 2;
       }
     } else if (!strcmp(a, "--field")) {

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include "ed.h"
 #include "td.h"
+#include "maps.h"
 
 typedef struct wg_run_options {
   const char *out_path;      /* RUN.h5 */
@@ -55,6 +56,7 @@ typedef struct wg_run {
   long long *frame_bonds;
   long long frames_bytes;
   wg_profile prof;
+  wg_map map;                /* lateral maps over windows of time (maps.h) */
   /* next sampling times, as multiples of their intervals (exact, no accumulation) */
   long long k_series, k_snapshot, k_profile, k_checkpoint;
   double wall_start, wall_resumed; /* wall-clock bookkeeping (volatile) */

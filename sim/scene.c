@@ -66,7 +66,8 @@ enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
-  K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_DT_CHECKPOINT, K_STALL_RATE, K_STALL_ACTION,
+  K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_MAP_BINS, K_MAP_BINS_Y, K_MAP_START,
+  K_DT_MAP, K_MAP_SAMPLES, K_DT_CHECKPOINT, K_STALL_RATE, K_STALL_ACTION,
   K_SHEAR_FORCE, K_SHEAR_BINS, K_SHEAR_ON, K_SHEAR_OFF,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
   K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, K_INTEGRATOR, K_MU, K_MU_WALL, K_KT_RATIO,
@@ -183,6 +184,19 @@ static const key_desc keys[NKEYS] = {
   [K_DT_PROFILE] = {"dt_profile", T_DOUBLE, OFF(dt_profile), 0, INF, MIN_EXCL | MAX_EXCL,
                     DEF_COND, 0, "dt_series", "sqrt(d/g)", "sampling interval of profiles",
                     NULL, 0, 0},
+  [K_MAP_BINS] = {"map_bins", T_INT, OFF(map_bins), 0, 100000, 0, DEF_VALUE, 0, NULL, "",
+                  "cells along x of the lateral maps (number density, bridge density, T_g "
+                  "averaged over windows of time, /observables/maps); 0 = no maps", NULL, 0, 0},
+  [K_MAP_BINS_Y] = {"map_bins_y", T_INT, OFF(map_bins_y), 1, 100000, 0, DEF_COND, 0,
+                    "round(map_bins ly / lx)", "", "cells along y of the lateral maps (3D)",
+                    NULL, 0, 0},
+  [K_MAP_START] = {"map_start", T_DOUBLE, OFF(map_start), 0, INF, MAX_EXCL, DEF_VALUE, 0, NULL,
+                   "sqrt(d/g)", "time the first map window begins", NULL, 0, 0},
+  [K_DT_MAP] = {"dt_map", T_DOUBLE, OFF(dt_map), 0, INF, MIN_EXCL | MAX_EXCL, DEF_COND, 0,
+                "t_end/100", "sqrt(d/g)", "length of a map window (one frame per window; a "
+                "window unfinished at t_end gives none)", NULL, 0, 0},
+  [K_MAP_SAMPLES] = {"map_samples", T_INT, OFF(map_samples), 1, 1000000, 0, DEF_VALUE, 10,
+                     NULL, "", "samples per map window, at equal intervals", NULL, 0, 0},
   [K_DT_CHECKPOINT] = {"dt_checkpoint", T_DOUBLE, OFF(dt_checkpoint), 0, INF, MAX_EXCL,
                        DEF_COND, 0, "t_end/10", "sqrt(d/g)",
                        "checkpoint interval; 0 = no checkpoints", NULL, 0, 0},
@@ -989,6 +1003,19 @@ static int resolve_output_times(wg_scene *sc)
   if (!given(sc, K_PROFILE_START)) sc->profile_start = sc->t_end / 2;
   if (!given(sc, K_DT_PROFILE)) sc->dt_profile = sc->dt_series;
   if (!given(sc, K_DT_CHECKPOINT)) sc->dt_checkpoint = sc->t_end / 10;
+  if (!given(sc, K_DT_MAP)) sc->dt_map = sc->t_end / 100;
+  if (sc->dim != 3) {
+    if (given(sc, K_MAP_BINS_Y) && sc->map_bins_y != 1)
+      return pair_error(sc, K_MAP_BINS_Y, K_DIM, "a 2D map is one row of cells along x: "
+                        "map_bins_y must be 1 (or not given)");
+    sc->map_bins_y = 1;
+  } else if (!given(sc, K_MAP_BINS_Y)) {
+    sc->map_bins_y = (int)lround(sc->map_bins * sc->ly / sc->lx);
+    if (sc->map_bins_y < 1) sc->map_bins_y = 1;
+  }
+  if (sc->map_start > sc->t_end)
+    return pair_error(sc, K_MAP_START, K_T_END, "value %g out of range [0, t_end = %g]",
+                      sc->map_start, sc->t_end);
   if (sc->profile_start > sc->t_end)
     return pair_error(sc, K_PROFILE_START, K_T_END, "value %g out of range [0, t_end = %g]",
                       sc->profile_start, sc->t_end);

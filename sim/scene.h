@@ -46,6 +46,11 @@ typedef struct wg_scene {
   int profile_bins;    /* profile_bins: lateral bins along x for profiles, 0 = none (default 0) */
   double profile_start;/* profile_start: time from which profiles are averaged (default t_end/2) */
   double dt_profile;   /* dt_profile: sampling interval of profiles (default dt_series) */
+  int map_bins;        /* map_bins: cells of the lateral maps along x, 0 = no maps (default 0) */
+  int map_bins_y;      /* map_bins_y: cells along y (3D; default: square cells) */
+  double map_start;    /* map_start: time the first map window begins (default 0) */
+  double dt_map;       /* dt_map: length of a map window (default t_end/100) */
+  int map_samples;     /* map_samples: samples per map window (default 10) */
   double dt_checkpoint;/* dt_checkpoint: checkpoint interval, 0 = none (default t_end/10) */
   double stall_rate;   /* stall_rate: physical events per particle and unit time above which an
                           event-driven run warns that it crawls; 0 = never (default 1000) */
