@@ -52,6 +52,7 @@ typedef struct options {
   double window;          /* > 0: consecutive windows of this length within [t0, t1] */
   double t_fg, t_sf;      /* NAN: from the data */
   double ef, eg;          /* --ends: E*_f-fgc, E*_fgc-g; NAN: not given */
+  int ends_auto;          /* --ends auto: from the scan's own one-phase and coexisting runs */
   double fsmax;           /* strip: maximum shear force F_smax [m g] */
   double sigma;           /* relax: interfacial energy for mu_f */
   double xmin, xmax;      /* powerfit range */
@@ -121,6 +122,9 @@ static int usage(FILE *o, int rc)
     "  --t-fg X            fix the gas cut (T_g/E_cb, or density) instead of Otsu's\n"
     "  --t-sf X            solid below this T_g/E_cb (default 0.01)\n"
     "  --ends EF:EG        E*_f-fgc and E*_fgc-g: estar_tilde = (E* - EF)/(EG - EF)\n"
+    "  --ends auto         ag: the ends from the scan itself, each the midpoint between the\n"
+    "                      last one-phase run (a_g = 0, resp. 1) and the first coexisting one\n"
+    "                      (0 < a_g < 1), +- half their gap (a '# ends' line); not with --window\n"
     "  --h5 FILE          ag: also write the table to FILE (HDF5: /ag/<column>, one value\n"
     "                      per run; /ag/file the run names; attribute threshold on /ag)\n"
     "  --fsmax F, --sigma S, --x COL, --y COL, --xmin X, --xmax X  (strip, relax, powerfit)\n"
@@ -826,11 +830,39 @@ static int mode_ag(int nf, char **files, const options *o)
   double (*col)[AG_COLS] = malloc(sizeof *col * (n ? n : 1));
   const char **shapes = malloc(sizeof *shapes * (n ? n : 1)), **names = malloc(sizeof *names * (n ? n : 1));
   if (!col || !shapes || !names) rc = 1;
+  agrow *rows = malloc(sizeof *rows * (n ? n : 1));
+  if (!rows) rc = 1;
+  for (int r = 0; !rc && r < n; r++) rows[r] = measure_ag(&fds[r]);
+  double ef = o->ef, eg = o->eg;
+  if (!rc && o->ends_auto) {
+    /* coexisting runs span [c0, c1]; f1 the largest E* below with a_g = 0, g0 the smallest
+       above with a_g = 1 */
+    double c0 = INFINITY, c1 = -INFINITY, f1 = -INFINITY, g0 = INFINITY;
+    for (int r = 0; r < n; r++)
+      if (rows[r].a_g > 0 && rows[r].a_g < 1) {
+        c0 = fmin(c0, fds[r].estar);
+        c1 = fmax(c1, fds[r].estar);
+      }
+    for (int r = 0; r < n; r++) {
+      if (rows[r].a_g == 0 && fds[r].estar < c0) f1 = fmax(f1, fds[r].estar);
+      if (rows[r].a_g == 1 && fds[r].estar > c1) g0 = fmin(g0, fds[r].estar);
+    }
+    if (!isfinite(c0) || !isfinite(f1) || !isfinite(g0)) {
+      fprintf(stderr, PROG ": --ends auto: the scan needs a coexisting run with a one-phase "
+              "fluid run below it and a gas run above it\n");
+      rc = 1;
+    } else {
+      ef = 0.5 * (f1 + c0);
+      eg = 0.5 * (c1 + g0);
+      printf("# ends from the scan: E*_f-fgc = %.6g +- %.3g, E*_fgc-g = %.6g +- %.3g\n", ef,
+             0.5 * (c0 - f1), eg, 0.5 * (g0 - c1));
+    }
+  }
   if (!rc) {
     printf("file\tgamma\testar\testar_tilde\ta_g\ta_g_err\tn_gas\tn_dense\tshape\tr_eq\tcells\tt_from\tt_to\n");
     for (int r = 0; r < n; r++) {
-      agrow a = measure_ag(&fds[r]);
-      double et = isfinite(o->ef) ? (fds[r].estar - o->ef) / (o->eg - o->ef) : NAN;
+      agrow a = rows[r];
+      double et = isfinite(ef) ? (fds[r].estar - ef) / (eg - ef) : NAN;
       double row[AG_COLS] = {fds[r].gamma, fds[r].estar, et, a.a_g, a.err, a.n_gas, a.n_dense, a.r_eq,
                              fds[r].t_from, fds[r].t_to};
       memcpy(col[r], row, sizeof row);
@@ -844,6 +876,7 @@ static int mode_ag(int nf, char **files, const options *o)
   }
   for (int r = 0; r < n; r++) field_free(&fds[r]);
   free(fds);
+  free(rows);
   free(col);
   free(shapes);
   free(names);
@@ -1322,6 +1355,8 @@ int main(int argc, char **argv)
     else if (!strcmp(a, "--h5")) o.h5 = v;
     else if (!strcmp(a, "--x")) o.xcol = v;
     else if (!strcmp(a, "--y")) o.ycol = v;
+    else if (!strcmp(a, "--ends") && !strcmp(v, "auto"))
+      o.ends_auto = 1;
     else if (!strcmp(a, "--ends")) {
       if (pair(a, v, &o.ef, &o.eg)) return 2;
       if (!(o.eg != o.ef)) {
@@ -1339,6 +1374,10 @@ int main(int argc, char **argv)
   }
   if (isfinite(o.t_fg) && !(o.t_fg > 0)) {
     fprintf(stderr, PROG ": option --t-fg: must be positive\n");
+    return 2;
+  }
+  if (o.ends_auto && o.window > 0) {
+    fprintf(stderr, PROG ": option --ends auto: one row per run is needed (not with --window)\n");
     return 2;
   }
   if (nf == 0) {
