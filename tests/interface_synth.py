@@ -84,7 +84,7 @@ def layered(gas_mask, X, Y, z_height, dim, frames):
 
 with h5py.File(out, "w") as f:
     if kind == "profile2d":
-        header(f, [100.0, 9.0], {})
+        header(f, [100.0, 9.0], {"estar": g("estar", 10)})
         x = np.arange(100) + 0.5
         g0, g1 = g("g0", 20), g("g1", 60)
         gas = ((x - g0) % 100) < ((g1 - g0) % 100)

@@ -42,6 +42,21 @@ check "--t-fg 100 (above every cell): a_g = 0, shape f" \
 check "--h5: /ag/a_g = [0.4, 0.4], run names and shapes as attributes, the threshold" \
   bash -c "/usr/bin/python3 -c \"import h5py; f = h5py.File('$tmp/ag.h5', 'r'); g = f['ag']; assert list(g['a_g'][()]) == [0.4, 0.4]; assert [s.decode() for s in g.attrs['shape']] == ['plug', 'plug']; assert g.attrs['file'][1].decode().endswith('pw.h5'); assert abs(g.attrs['threshold'] - 12.247) < 0.01\" && [ ! -e '$tmp/ag.h5.tmp' ]"
 
+# --ends auto: fluid at E* = 4, 6, coexistence at 8, 10, gas at 12: ends 7 +- 1 and 11 +- 1
+for e in 4 6; do $synth profile2d "$tmp/e$e.h5" estar=$e g0=20 g1=20; done
+for e in 8 10; do $synth profile2d "$tmp/e$e.h5" estar=$e; done
+$synth profile2d "$tmp/e12.h5" estar=12 g0=0 g1=99.999
+"$tool" ag --ends auto "$tmp"/e4.h5 "$tmp"/e6.h5 "$tmp"/e8.h5 "$tmp"/e10.h5 "$tmp"/e12.h5 > "$tmp/auto.out"
+check "--ends auto: the ends from the scan, 7 +- 1 and 11 +- 1" \
+  grep -q '^# ends from the scan: E\*_f-fgc = 7 +- 1, E\*_fgc-g = 11 +- 1$' "$tmp/auto.out"
+check "--ends auto: E* = 8 gives estar_tilde 0.25, E* = 12 gives 1.25" \
+  test "$(col estar_tilde "$tmp/auto.out" 3) $(col estar_tilde "$tmp/auto.out" 5)" = "0.25 1.25"
+"$tool" ag --ends auto "$tmp"/e8.h5 "$tmp"/e10.h5 "$tmp"/e12.h5 > /dev/null 2> "$tmp/auto.err"; rc=$?
+check "--ends auto without a fluid run below the coexistence: refused" \
+  bash -c "[ $rc -ne 0 ] && grep -q 'one-phase fluid run below' '$tmp/auto.err'"
+"$tool" ag --ends auto --window 10 "$tmp"/e8.h5 > /dev/null 2> "$tmp/auto2.err"; rc=$?
+check "--ends auto with --window: refused (exit 2)" test "$rc" -eq 2
+
 # (2) 2D snapshots: lx = 100, gas in [30, 70) on 40 cells: a_g = 0.4 from particles
 $synth snap2d "$tmp/s.h5"
 "$tool" ag --bins 40 "$tmp/s.h5" > "$tmp/s.out"

@@ -31,7 +31,7 @@ END {
   }
   printf "coexisting_runs\t%d\tnan\n", coex
   for (i = 1; i <= n; i++) if (sh[i] in rank) lastc = i
-  if (first) printf "ag_rises\t%d\tnan\n", ag[lastc] - ag[first] > er[lastc] + er[first]
+  if (first) printf "ag_rises\t%d\tnan\n", (ag[lastc] - ag[first] > er[lastc] + er[first])
   if (first) printf "ag_first_coexisting\t%.4g\t%.3g\nestar_tilde_first_coexisting\t%.4g\tnan\n", ag[first], er[first], et[first]
   if (last_i && first_ii)
     printf "a_ds\t%.4g\t%.3g\n", (ag[last_i] + ag[first_ii]) / 2, (ag[first_ii] - ag[last_i]) / 2
