@@ -99,6 +99,16 @@ static int state_from_run(const wg_scene *sc, wg_particle *p, double *mass)
   if (st == WG_OK) st = wg_h5_read_rows(f, "/particles/all/velocity/value", H5T_NATIVE_DOUBLE, last, 1, buf);
   for (long i = 0; st == WG_OK && i < n; i++)
     for (int k = 0; k < dim; k++) p[i].v[k] = buf[dim * i + k];
+  if (st == WG_OK && sc->init_jitter > 0) {
+    gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+    if (!rng) st = wg_error(WG_ENOMEM, path, "init_jitter: cannot allocate the RNG");
+    else {
+      gsl_rng_set(rng, (unsigned long)sc->seed);
+      for (long i = 0; i < n; i++)
+        for (int k = 0; k < dim; k++) p[i].v[k] *= 1 + sc->init_jitter * gsl_ran_gaussian_ziggurat(rng, 1);
+      gsl_rng_free(rng);
+    }
+  }
   if (st == WG_OK) st = wg_h5_read(f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, buf);
   for (long i = 0; st == WG_OK && i < n; i++) {
     p[i].radius = 0.5 * buf[i];

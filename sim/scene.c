@@ -65,7 +65,7 @@ typedef struct {
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_GAMMA, K_ESTAR,
-  K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
+  K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_INIT_JITTER, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_MAP_BINS, K_MAP_BINS_Y, K_MAP_START,
   K_DT_MAP, K_MAP_SAMPLES, K_DT_CHECKPOINT, K_STALL_RATE, K_STALL_ACTION,
   K_SHEAR_FORCE, K_SHEAR_BINS, K_SHEAR_ON, K_SHEAR_OFF,
@@ -165,6 +165,11 @@ static const key_desc keys[NKEYS] = {
                    "run file whose last snapshot, with its bridges, starts this run (a scan "
                    "continued from the previous point; the scene file's init, tg_init and "
                    "tg_init_abs are then not used); empty = none", NULL, G_INIT, 1},
+  [K_INIT_JITTER] = {"init_jitter", T_DOUBLE, OFF(init_jitter), 0, 1, 0, DEF_VALUE, 0, NULL, "1",
+                     "with init_from: each velocity component times (1 + init_jitter x), x "
+                     "Gaussian from the seed: seeds of one state that part after a few "
+                     "collisions (Fig. 5.14's 20 relaxations); 0 = the state as recorded",
+                     NULL, 0, 0},
   [K_SEED] = {"seed", T_SEED, OFF(seed), 0, 0, 0, DEF_REQUIRED, 0, NULL, "",
               "seed of the random number generator (unsigned 64-bit)", NULL, 0, 0},
   [K_T_END] = {"t_end", T_DOUBLE, OFF(t_end), 0, INF, MIN_EXCL | MAX_EXCL, DEF_REQUIRED, 0,
@@ -994,6 +999,8 @@ static int check_fill(const wg_scene *sc)
     return pair_error(sc, K_INIT, K_CONTAINER, "a packed bed needs container = shaker");
   if (sc->init_from[0] && given(sc, K_INIT))
     return pair_error(sc, K_INIT, K_INIT_FROM, "give either init or init_from");
+  if (!sc->init_from[0] && sc->init_jitter > 0)
+    return pair_error(sc, K_INIT_JITTER, K_INIT_FROM, "a jitter of the velocities needs init_from");
   return WG_OK;
 }
 

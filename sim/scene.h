@@ -39,6 +39,7 @@ typedef struct wg_scene {
   double tg_init_abs;  /* tg_init_abs: initial T_g [m g d] (dry runs, or instead of tg_init) */
   int init_packing;    /* init = lattice | packed: sites fill the container, or a packed bed */
   char init_from[1024];/* init_from: run file whose last snapshot (and its bridges) starts this run */
+  double init_jitter;  /* init_jitter: relative Gaussian noise on init_from's velocities (0: none) */
   unsigned long long seed; /* seed: RNG seed, required */
   double t_end;        /* t_end: simulated time [sqrt(d/g)], required */
   double dt_series;    /* dt_series: sampling interval of time series (default t_end/1000) */
