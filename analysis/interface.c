@@ -97,7 +97,8 @@ static int usage(FILE *o, int rc)
     "                      Eq. 2.8, so in units of d), sigma_area_over_gamma (sigma over the box\n"
     "                      height: per area, comparable with Eq. 5.10), and eq5_10_sigma_over_gamma\n"
     "                      = (pi/6) n_cb d s_crit n^(-1/3) from the fluid's densities\n"
-    "  relax RUN.h5 ...    seeds of one relaxation: A~_d per snapshot (field of that snapshot),\n"
+    "  relax RUN.h5 ...    seeds of one relaxation: A~_d per frame (map or snapshot) with time\n"
+    "                      in --from/--to (default all),\n"
     "                      averaged over the runs at equal times: rows t ad_tilde sd n; then\n"
     "                      (comment lines) the fit A~_d = A0 exp(-t/tau) and, with --sigma S,\n"
     "                      mu_f = 1 / ((2 pi)^2 S tau) (Eq. 5.13)\n"
@@ -1078,6 +1079,7 @@ static int mode_relax(int nf, char **files, const options *o)
   double cut = isfinite(o->t_fg) ? log10(o->t_fg) : NAN;
   for (int r = 0; !rc && r < nf; r++)
     for (hsize_t k = 0; !rc && k < nt; k++) {
+      if (t0[k] < o->t0 || t0[k] > o->t1) continue; /* --from, --to: the frames fitted */
       field fd;
       if ((rc = load_field(files[r], o, &fd, (long)k))) break;
       if (fd.ny < 2) {
