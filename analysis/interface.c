@@ -96,7 +96,8 @@ static int usage(FILE *o, int rc)
     "                      the thesis's normalisation], sigma_over_gamma (gamma = F_B / (pi d),\n"
     "                      Eq. 2.8, so in units of d), sigma_area_over_gamma (sigma over the box\n"
     "                      height: per area, comparable with Eq. 5.10), and eq5_10_sigma_over_gamma\n"
-    "                      = (pi/6) n_cb d s_crit n^(-1/3) from the fluid's densities\n"
+    "                      = (pi/6) n_cb d s_crit n^(-1/3) from the fluid's densities per volume\n"
+    "                      (eq5_10_lateral_sigma_over_gamma: per lateral area, quasi-2D)\n"
     "  relax RUN.h5 ...    seeds of one relaxation: A~_d per frame (map or snapshot) with time\n"
     "                      in --from/--to (default all),\n"
     "                      averaged over the runs at equal times: rows t ad_tilde sd n; then\n"
@@ -1055,6 +1056,10 @@ static int mode_strip(int nf, char **files, const options *o)
     }
     /* Eq. 5.10 */
     printf("eq5_10_sigma_over_gamma\t%.6g\tnan\n", M_PI / 6 * ncbvol * fd->s_crit * pow(1 / nvol, 1.0 / 3));
+    /* the same with the densities per lateral area (the layer seen from above, as Fig. 5.7
+       draws n_cb): the quasi-2D reading */
+    printf("eq5_10_lateral_sigma_over_gamma\t%.6g\tnan\n",
+           M_PI / 6 * (ncb / area) * fd->s_crit * pow(area / np, 1.0 / 3));
   }
   for (int r = 0; r < n; r++) field_free(&fds[r]);
   free(fds);

@@ -9,18 +9,18 @@ do for [k = 1:2] {
   reset
   if (k == 1) { set terminal pngcairo size 1200,520 font ",12"; set output png } \
   else { set terminal pdfcairo size 12in,5.2in font ",12"; set output pdf }
-  set multiplot layout 1, 2 title sprintf("relaxation of the sheared elastic strip, {/Symbol G} = 100, 48 d × 96 d (%s profile)", prof)
+  set multiplot layout 1, 2 title sprintf("relaxation of the sheared elastic strip, {/Symbol G} = 100, L_x = %g d (%s profile)", lx, prof)
   set logscale y
   set xlabel "t / (d/g)^{1/2} after the field is off"; set ylabel "A_d / d"
   set key top right box
   set title "Fig. 5.14"
-  plot for [i = 1:n] word(relax, i) using 1:($2 * lx):($3 * lx) every ::1 with yerrorbars pt 7 ps 1 lc i title sprintf("E^* = %s", ename(i)), \
+  plot for [i = 1:n] word(relax, i) using 1:($2 * lx):($3 * lx) with yerrorbars pt 7 ps 1 lc i title sprintf("E^* = %s", ename(i)), \
        for [i = 1:n] val(sprintf("ad0_E%s", ename(i))) * lx * exp(-x / val(sprintf("tau_E%s", ename(i)))) with lines lw 2 lc i \
          title sprintf("{/Symbol t} = %.0f {/Symbol \261} %.0f", val(sprintf("tau_E%s", ename(i))), err(sprintf("tau_E%s", ename(i))))
   unset logscale y
   set xlabel "Ẽ^*"; set ylabel "{/Symbol m}_f  [(m g)^{-1} (g/d)^{1/2}]"
   set xrange [-0.1:1.1]; set yrange [0:*]
-  set title "mobility (Fig. 5.15)"
+  set title "mobility (Fig. 5.15)"; unset key
   plot for [i = 1:n] '+' using (val(sprintf("estar_tilde_E%s", ename(i)))):(val(sprintf("mu_f_E%s", ename(i)))):(err(sprintf("mu_f_E%s", ename(i)))) every ::0::0 \
        with yerrorbars pt 7 ps 1.5 lc rgb "black" notitle
   unset multiplot

@@ -8,7 +8,7 @@ FNR == NR { next }
 FNR == 1 { next }
 {
   e = $1; if (!(e in seen)) { seen[e] = 1; order[++ne] = e }
-  k = ++cnt[e]; F[e, k] = $3; A[e, k] = $4; S[e, k] = ($5 > 1e-4 ? $5 : 1e-4); NP[e] += $6; Q[e] += $7
+  k = ++cnt[e]; F[e, k] = $3; A[e, k] = $4; S[e, k] = ($5 > 1e-4 ? $5 : 1e-4); NP[e] += $6; Q[e] += $7; QL[e] += $8
 }
 END {
   pi = 3.14159265358979; gam = ecb / (scrit * pi)
@@ -17,7 +17,7 @@ END {
   falls = 1; prev = ""
   for (i = 1; i <= ne; i++) {
     e = order[i]; sxx = 0; sxy = 0
-    for (k = 1; k <= cnt[e]; k++) { w = 1 / (S[e, k] * S[e, k]); sxx += w * F[e, k] * F[e, k]; sxy += w * F[e, k] * A[e, k] }
+    for (k = 1; k <= cnt[e]; k++) { wt = 1 / (S[e, k] * S[e, k]); sxx += wt * F[e, k] * F[e, k]; sxy += wt * F[e, k] * A[e, k] }
     s = sxy / sxx; chi = 0
     for (k = 1; k <= cnt[e]; k++) { r = (A[e, k] - s * F[e, k]) / S[e, k]; chi += r * r }
     ds = sqrt(1 / sxx) * (cnt[e] > 1 && chi > cnt[e] - 1 ? sqrt(chi / (cnt[e] - 1)) : 1)
@@ -25,13 +25,17 @@ END {
     et = (ef != "" && eg != "" && eg != ef) ? (e - ef) / (eg - ef) : "nan"
     printf "estar_tilde_E%s\t%.4g\tnan\n", e, et
     printf "ad_slope_E%s\t%.5g\t%.3g\n", e, s, ds
-    printf "ad_chi2_dof_E%s\t%.3g\tnan\n", e, cnt[e] > 1 ? chi / (cnt[e] - 1) : 0
+    printf "ad_chi2_dof_E%s\t%.3g\tnan\n", e, (cnt[e] > 1 ? chi / (cnt[e] - 1) : 0)
     printf "n_p_E%s\t%.6g\tnan\n", e, np
     printf "sigma_E%s\t%.5g\t%.3g\n", e, sig, dsig
     printf "sigma_over_gamma_E%s\t%.5g\t%.3g\n", e, sig / gam, dsig / gam
     printf "eq5_10_sigma_over_gamma_E%s\t%.4g\tnan\n", e, Q[e] / cnt[e]
+    printf "eq5_10_lateral_sigma_over_gamma_E%s\t%.4g\tnan\n", e, QL[e] / cnt[e]
+    # with A_d in d instead of A~_d = A_d / L_x in Eq. 5.9 (sigma / L_x): the reading under
+    # which the thesis's 0.15-0.40 fall (docs/chapter5.md)
+    printf "sigma_ad_in_d_over_gamma_E%s\t%.5g\t%.3g\n", e, sig / (gam * lx), dsig / (gam * lx)
     if (prev != "" && !(sig < prevsig)) falls = 0
     prev = e; prevsig = sig
   }
-  printf "sigma_falls\t%d\tnan\n", ne > 1 ? falls : 0
+  printf "sigma_falls\t%d\tnan\n", (ne > 1 ? falls : 0)
 }
