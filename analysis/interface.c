@@ -724,6 +724,11 @@ static int run_times(const char *file, const options *o, double **t, hsize_t *n)
     *n = s.frames;
   }
   wg_h5_close(f);
+  if (rc) { /* nothing for the caller to free */
+    free(*t);
+    *t = NULL;
+    *n = 0;
+  }
   return rc;
 }
 
@@ -1073,11 +1078,8 @@ static int mode_relax(int nf, char **files, const options *o)
   /* the frames of the first run set the times; every run must have them */
   double *t0 = NULL;
   hsize_t nt = 0;
-  int rc = run_times(files[0], o, &t0, &nt);
-  if (rc) {
-    free(t0);
-    return 1;
-  }
+  if (run_times(files[0], o, &t0, &nt)) return 1;
+  int rc = 0;
   double *sum = calloc(nt, sizeof(double)), *sum2 = calloc(nt, sizeof(double));
   int *cnt = calloc(nt, sizeof(int));
   if (!sum || !sum2 || !cnt) rc = 1;
@@ -1142,11 +1144,8 @@ static int mode_spacetime(int nf, char **files, const options *o)
   }
   double *tk = NULL;
   hsize_t nt = 0;
-  int rc = run_times(files[0], o, &tk, &nt);
-  if (rc) {
-    free(tk);
-    return 1;
-  }
+  if (run_times(files[0], o, &tk, &nt)) return 1;
+  int rc = 0;
   printf("t\tx\tnumber_density\tbridge_density\n");
   for (hsize_t k = 0; !rc && k < nt; k++) {
     if (tk[k] < o->t0 || tk[k] > o->t1) continue;
