@@ -97,7 +97,8 @@ static int usage(FILE *o, int rc)
     "                      Eq. 2.8, so in units of d), sigma_area_over_gamma (sigma over the box\n"
     "                      height: per area, comparable with Eq. 5.10), and eq5_10_sigma_over_gamma\n"
     "                      = (pi/6) n_cb d s_crit n^(-1/3) from the fluid's densities per volume\n"
-    "                      (eq5_10_lateral_sigma_over_gamma: per lateral area, quasi-2D)\n"
+    "                      (eq5_10_lateral_sigma_over_gamma: per lateral area, quasi-2D); with\n"
+    "                      --window, a window without a strip gives ad_tilde nan, not an error\n"
     "  relax RUN.h5 ...    seeds of one relaxation: A~_d per frame (map or snapshot) with time\n"
     "                      in --from/--to (default all),\n"
     "                      averaged over the runs at equal times: rows t ad_tilde sd n; then\n"
@@ -1031,13 +1032,22 @@ static int mode_strip(int nf, char **files, const options *o)
       break;
     }
     agrow shape = measure_ag(fd);
-    if (strcmp(shape.shape, "II")) {
+    double ad = NAN, err = NAN;
+    int strip = !strcmp(shape.shape, "II");
+    if (strip && o->window > 0) { /* a window of a run's history: a gap, not an error */
+      strip = strip_amplitude(fd, &ad, &err) == 0;
+    } else if (strip && (rc = strip_amplitude(fd, &ad, &err))) break;
+    if (!strip && o->window > 0) {
+      printf("file\t%s\tnan\nkey\tvalue\terror\nt_from\t%.10g\tnan\nt_to\t%.10g\tnan\n"
+             "ad_tilde\tnan\tnan\n# shape %s: no strip along x in this window\n",
+             fd->file, fd->t_from, fd->t_to, shape.shape);
+      continue;
+    }
+    if (!strip) {
       fprintf(stderr, PROG ": %s: no strip along x to trace (shape %s, not II)\n", fd->file, shape.shape);
       rc = 1;
       break;
     }
-    double ad, err;
-    if ((rc = strip_amplitude(fd, &ad, &err))) break;
     /* N_p: particles in the dense cells; the fluid's n and n_cb per volume (height) */
     double cell = fd->lx / fd->nx * fd->ly / fd->ny, np = 0, ncb = 0, area = 0;
     for (size_t j = 0; j < (size_t)fd->nx * fd->ny; j++)
