@@ -62,6 +62,10 @@ rm -rf "$tmp/runs"/*
 run
 check "the same run again is taken from the archive, not simulated" reused
 check "and is the archived record, byte for byte" cmp -s "$tmp/runs/r.h5" "$tmp/arch/r.h5"
+touch -d '1 hour ago' "$tmp/runs/r.h5"
+run
+check "asked again with its record in place (its conf newer, say): kept, neither simulated nor copied" \
+  bash -c "grep -q \"already this run's record\" '$tmp/err' && ! grep -q '^summary: events=' '$tmp/err' && [ '$tmp/runs/r.h5' -nt '$tmp/arch/r.h5' ] && cmp -s '$tmp/runs/r.h5' '$tmp/arch/r.h5'"
 "$top/scripts/archive-records" "$tmp/runs" "$tmp/arch" 2> "$tmp/arch.err"
 check "archiving it again files nothing" grep -q '0 filed, 1 already there' "$tmp/arch.err"
 echo "bbbb000000000000" > "$tmp/version"
