@@ -18,10 +18,10 @@ do for [k = 1:2] {
        for [i = 1:n] val(sprintf("ad0_E%s", ename(i))) * lx * exp(-x / val(sprintf("tau_E%s", ename(i)))) with lines lw 2 lc i \
          title sprintf("{/Symbol t} = %.0f {/Symbol \261} %.0f", val(sprintf("tau_E%s", ename(i))), err(sprintf("tau_E%s", ename(i))))
   unset logscale y
-  set xlabel "Ẽ^*"; set ylabel "{/Symbol m}_f  [(m g)^{-1} (g/d)^{1/2}]"
-  set xrange [-0.1:1.1]; set yrange [0:*]
+  set xlabel "E^*"; set ylabel "{/Symbol m}_f  [(m g)^{-1} (g/d)^{1/2}]"
+  set xrange [*:*]; set yrange [0:*]; set offsets 0.02, 0.02, 0, 0
   set title "mobility (Fig. 5.15)"; unset key
-  plot for [i = 1:n] '+' using (val(sprintf("estar_tilde_E%s", ename(i)))):(val(sprintf("mu_f_E%s", ename(i)))):(err(sprintf("mu_f_E%s", ename(i)))) every ::0::0 \
+  plot for [i = 1:n] '+' using (real(ename(i))):(val(sprintf("mu_f_E%s", ename(i)))):(err(sprintf("mu_f_E%s", ename(i)))) every ::0::0 \
        with yerrorbars pt 7 ps 1.5 lc rgb "black" notitle
   unset multiplot
 }

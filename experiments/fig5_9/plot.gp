@@ -3,8 +3,8 @@
 # (b) Fig. 5.8: A_d / d per window of 10 t.u. after the field is switched on, E* = 2.14, one
 # colour per force.  (c) Fig. 5.9: A~_d = A_d / L_x from t = avg_from on against F_smax L_x / E_cb,
 # one colour per E*, with the line through the origin fitted per E*.  (d, e) Fig. 5.10: the
-# fraction of the spheres in the fluid, N_p / N, against the force and against E~*.  (f) Fig.
-# 5.11 (log scale): sigma / gamma against E~*: Eq. 5.9 as printed (energy per length of the
+# fraction of the spheres in the fluid, N_p / N, against the force and against E*.  (f) Fig.
+# 5.11 (log scale): sigma / gamma against E* (E~* needs both ends, which the scan may not bracket): Eq. 5.9 as printed (energy per length of the
 # interface line, in units of d; black), the same with A_d in d for A~_d (over L_x; grey),
 # Eq. 5.10 from the fluid's densities per volume (red squares) and per lateral area (red open
 # squares), and the thesis's range 0.15-0.40 (band).
@@ -45,23 +45,27 @@ do for [k = 1:2] {
   plot for [i = 1:ne] strips using (column("estar") == real(word(estars, i)) ? column("f_lx_ecb") : NaN):(column("n_p") / n) \
          with linespoints pt 7 ps 1.3 lc i title sprintf("E^* = %s", word(estars, i))
   # (e)
-  set title "(e) N_p / N against Ẽ^* (Fig. 5.10, right)"
-  set xlabel "Ẽ^*"; set xrange [-0.1:1.1]
-  plot for [i = 1:ne] '+' using (key("estar_tilde", i)):(key("n_p", i) / n) every ::0::0 with points pt 7 ps 1.5 lc i notitle
+  ef = val("estar_f_fgc"); eg = val("estar_fgc_g")
+  emin = real(word(estars, 1)); emax = real(word(estars, ne)); pad = 0.25 * (emax - emin) + 0.02
+  set title sprintf("(e) N_p / N against E^* (Fig. 5.10, right); f-fgc at %.3g%s", ef, eg == eg ? sprintf(", fgc-g at %.3g", eg) : "")
+  set xlabel "E^*"; set xrange [emin - pad:emax + pad]
+  if (ef == ef) { set arrow 1 from ef, graph 0 to ef, graph 1 nohead dt 3 lc rgb "gray50" }
+  if (eg == eg) { set arrow 2 from eg, graph 0 to eg, graph 1 nohead dt 3 lc rgb "gray50" }
+  plot for [i = 1:ne] '+' using (real(word(estars, i))):(key("n_p", i) / n) every ::0::0 with points pt 7 ps 1.5 lc i notitle
   # (f)
   set title "(f) interfacial energy (Fig. 5.11)"
-  set xlabel "Ẽ^*"; set ylabel "{/Symbol s} / {/Symbol g}"
-  set xrange [-0.1:1.1]; set yrange [0.01:100]; set logscale y
+  set xlabel "E^*"; set ylabel "{/Symbol s} / {/Symbol g}"
+  set yrange [0.01:100]; set logscale y
   set key top right box font ",9"
   set style fill transparent solid 0.15 noborder
   plot '+' using 1:(0.15):(0.40) with filledcurves lc rgb "gray50" title "thesis 0.15-0.40", \
-       for [i = 1:ne] '+' using (key("estar_tilde", i)):(key("sigma_over_gamma", i)):(kerr("sigma_over_gamma", i)) every ::0::0 \
+       for [i = 1:ne] '+' using (real(word(estars, i))):(key("sigma_over_gamma", i)):(kerr("sigma_over_gamma", i)) every ::0::0 \
          with yerrorbars pt 7 ps 1.5 lc rgb "black" title (i == 1 ? "Eq. 5.9 with Ã_d (per length, units of d)" : ""), \
-       for [i = 1:ne] '+' using (key("estar_tilde", i)):(key("sigma_ad_in_d_over_gamma", i)):(kerr("sigma_ad_in_d_over_gamma", i)) every ::0::0 \
+       for [i = 1:ne] '+' using (real(word(estars, i))):(key("sigma_ad_in_d_over_gamma", i)):(kerr("sigma_ad_in_d_over_gamma", i)) every ::0::0 \
          with yerrorbars pt 6 ps 1.5 lc rgb "gray40" title (i == 1 ? "Eq. 5.9 with A_d in d" : ""), \
-       for [i = 1:ne] '+' using (key("estar_tilde", i)):(key("eq5_10_sigma_over_gamma", i)) every ::0::0 \
+       for [i = 1:ne] '+' using (real(word(estars, i))):(key("eq5_10_sigma_over_gamma", i)) every ::0::0 \
          with points pt 5 ps 1.3 lc rgb "red" title (i == 1 ? "Eq. 5.10, densities per volume" : ""), \
-       for [i = 1:ne] '+' using (key("estar_tilde", i)):(key("eq5_10_lateral_sigma_over_gamma", i)) every ::0::0 \
+       for [i = 1:ne] '+' using (real(word(estars, i))):(key("eq5_10_lateral_sigma_over_gamma", i)) every ::0::0 \
          with points pt 4 ps 1.3 lc rgb "red" title (i == 1 ? "Eq. 5.10, per lateral area" : "")
   unset multiplot
 }
