@@ -1,5 +1,5 @@
 # Fig. 5.2c's numbers from a wetgran-interface ag table (with --ends): the ends, the jump,
-# the drop-to-strip boundary a_D/S, the order of the shapes along E~*.
+# the drop-to-strip boundary a_D/S, the order of the shapes (by their mean a_g).
 /^# ends from the scan/ {
   split($0, w, " "); ef = w[8]; efe = w[10]; eg = w[13]; ege = w[15]; sub(",", "", efe); next
 }
@@ -17,18 +17,30 @@ END {
     }
   print "key\tvalue\terror"
   printf "estar_f_fgc\t%s\t%s\nestar_fgc_g\t%s\t%s\n", ef, efe, eg, ege
-  first = 0; first_ii = 0; order = 1; rank["I"] = 1; rank["II"] = 2; rank["III"] = 3; prev = 0
+  first = 0; first_ii = 0; rank["I"] = 1; rank["II"] = 2; rank["III"] = 3
   coex = 0; drop_over = 0
   for (i = 1; i <= n; i++) if (sh[i] == "I") last_i = i
   for (i = 1; i <= n; i++) {
     if (!(sh[i] in rank)) continue
     coex++
     if (!first) first = i
-    if (rank[sh[i]] < prev) order = 0
-    prev = rank[sh[i]]
+    sum[sh[i]] += ag[i]; num[sh[i]]++
     if (sh[i] == "I" && ag[i] > 1 / 3.14159265358979) drop_over = 1
     if (sh[i] == "II" && !first_ii && last_i && i > last_i) first_ii = i
   }
+  # the shapes' order: the mean a_g of the gas drops below the strips' below the fluid drops'
+  # (metastable drops may outlive the first strip along E~*, as in the thesis's Fig. 5.2c)
+  order = 1; prev = -1; classes = 0
+  for (k = 1; k <= 3; k++) {
+    s = k == 1 ? "I" : k == 2 ? "II" : "III"
+    if (!num[s]) continue
+    classes++
+    m = sum[s] / num[s]
+    printf "ag_mean_%s\t%.4g\tnan\n", s, m
+    if (m <= prev) order = 0
+    prev = m
+  }
+  if (classes < 2) order = 0 # one shape alone orders nothing
   printf "coexisting_runs\t%d\tnan\n", coex
   for (i = 1; i <= n; i++) if (sh[i] in rank) lastc = i
   if (first) printf "ag_rises\t%d\tnan\n", (ag[lastc] - ag[first] > er[lastc] + er[first])
