@@ -27,7 +27,7 @@ END {
   print "key\tvalue\terror"
   printf "estar_f_fgc\t%s\t%s\nestar_fgc_g\t%s\t%s\n", ef, efe, eg, ege
   printf "estar_last_coexisting_prep\t%s\tnan\n", (c1 > -1e300 ? c1 : "nan")
-  falls = 1; prev = ""
+  falls = 1; npfalls = 1; prev = ""
   for (i = 1; i <= ne; i++) {
     e = order[i]; sxx = 0; sxy = 0
     for (k = 1; k <= cnt[e]; k++) { wt = 1 / (S[e, k] * S[e, k]); sxx += wt * F[e, k] * F[e, k]; sxy += wt * F[e, k] * A[e, k] }
@@ -51,7 +51,9 @@ END {
     # which the thesis's 0.15-0.40 fall (docs/chapter5.md)
     printf "sigma_ad_in_d_over_gamma_E%s\t%.5g\t%.3g\n", e, sig / (gam * lx), dsig / (gam * lx)
     if (prev != "" && !(sig < prevsig)) falls = 0
-    prev = e; prevsig = sig
+    if (prev != "" && !(np < prevnp)) npfalls = 0
+    prev = e; prevsig = sig; prevnp = np
   }
   printf "sigma_falls\t%d\tnan\n", (ne > 1 ? falls : 0)
+  printf "n_p_falls\t%d\tnan\n", (ne > 1 ? npfalls : 0)
 }
