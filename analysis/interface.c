@@ -99,10 +99,10 @@ static int usage(FILE *o, int rc)
     "                      = (pi/6) n_cb d s_crit n^(-1/3) from the fluid's densities per volume\n"
     "                      (eq5_10_lateral_sigma_over_gamma: per lateral area, quasi-2D); with\n"
     "                      --window, a window without a strip gives ad_tilde nan, not an error\n"
-    "  relax RUN.h5 ...    seeds of one relaxation: A~_d per frame (map or snapshot) with time\n"
-    "                      in --from/--to (default all),\n"
+    "  relax RUN.h5 ...    seeds of one relaxation: A~_d per frame (map or snapshot),\n"
     "                      averaged over the runs at equal times: rows t ad_tilde sd n; then\n"
-    "                      (comment lines) the fit A~_d = A0 exp(-t/tau) and, with --sigma S,\n"
+    "                      (comment lines) the fit A~_d = A0 exp(-t/tau) over the frames in\n"
+    "                      --from/--to (default all) and, with --sigma S,\n"
     "                      mu_f = 1 / ((2 pi)^2 S tau) (Eq. 5.13)\n"
     "  spacetime RUN.h5    rows t x number_density bridge_density per snapshot and x cell\n"
     "                      (gnuplot: plot F using 1:2:3 with image)\n"
@@ -1096,7 +1096,6 @@ static int mode_relax(int nf, char **files, const options *o)
   double cut = isfinite(o->t_fg) ? log10(o->t_fg) : NAN;
   for (int r = 0; !rc && r < nf; r++)
     for (hsize_t k = 0; !rc && k < nt; k++) {
-      if (t0[k] < o->t0 || t0[k] > o->t1) continue; /* --from, --to: the frames fitted */
       field fd;
       if ((rc = load_field(files[r], o, &fd, (long)k))) break;
       if (fd.ny < 2) {
@@ -1123,7 +1122,7 @@ static int mode_relax(int nf, char **files, const options *o)
       if (!cnt[k]) continue;
       double mean = sum[k] / cnt[k], var = cnt[k] > 1 ? (sum2[k] - cnt[k] * mean * mean) / (cnt[k] - 1) : NAN;
       printf("%.10g\t%.6g\t%.3g\t%d\n", t0[k], mean, var > 0 ? sqrt(var) : 0.0, cnt[k]);
-      if (mean > 0 && lt && ly) {
+      if (mean > 0 && lt && ly && t0[k] >= o->t0 && t0[k] <= o->t1) { /* --from, --to: the fit */
         lt[m] = t0[k];
         ly[m++] = log(mean);
       }

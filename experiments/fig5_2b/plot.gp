@@ -1,8 +1,9 @@
 # Fig. 5.2b look: a_g against E~* (runs below E~* = 0 at a_g = 0, above 1 at a_g = 1), the fit
 # a E~*^beta over the coexisting runs with 0 < E~* <= 1; grey: the same runs masked by the
 # bridge density instead of T_g (shifted by 0.01 so both show) (wetgran-interface powerfit) and the thesis's 0.72 E~*^0.32.
-val(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $2 }' %s", k, res)))
-err(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $3 }' %s", k, res)))
+# (integers with an exponent, 4e-07, are written 4.0e-07: gnuplot's real() stops at the e)
+val(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { v = $2; if (v ~ /^[-+]?[0-9]+e/) sub(/e/, \".0e\", v); print v }' %s", k, res)))
+err(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { v = $3; if (v ~ /^[-+]?[0-9]+e/) sub(/e/, \".0e\", v); print v }' %s", k, res)))
 a = val("ag_prefactor"); b = val("ag_beta"); da = err("ag_prefactor"); db = err("ag_beta")
 do for [k = 1:2] {
   reset

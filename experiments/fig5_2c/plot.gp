@@ -4,8 +4,9 @@
 # mirror 1 - a_D/S; dotted blue: the thesis's a_D/S = 0.413.  Below, as the thesis's insets:
 # the time-averaged bridge density n_cb on the lateral plane (dark: many bridges, the fluid)
 # of the first run of each shape.
-val(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $2 }' %s", k, res)))
-err(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $3 }' %s", k, res)))
+# (integers with an exponent, 4e-07, are written 4.0e-07: gnuplot's real() stops at the e)
+val(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { v = $2; if (v ~ /^[-+]?[0-9]+e/) sub(/e/, \".0e\", v); print v }' %s", k, res)))
+err(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { v = $3; if (v ~ /^[-+]?[0-9]+e/) sub(/e/, \".0e\", v); print v }' %s", k, res)))
 shape_rgb(s) = s eq "I" ? 0x1a9a1a : s eq "II" ? 0x000000 : s eq "III" ? 0xd4a000 : 0x909090
 ads = val("a_ds"); dads = err("a_ds")
 ef = val("estar_f_fgc"); eg = val("estar_fgc_g")

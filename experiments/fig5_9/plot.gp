@@ -8,8 +8,9 @@
 # interface line, in units of d; black), the same with A_d in d for A~_d (over L_x; grey),
 # Eq. 5.10 from the fluid's densities per volume (red squares) and per lateral area (red open
 # squares), and the thesis's range 0.15-0.40 (band).
-val(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $2 }' %s", k, res)))
-err(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $3 }' %s", k, res)))
+# (integers with an exponent, 4e-07, are written 4.0e-07: gnuplot's real() stops at the e)
+val(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { v = $2; if (v ~ /^[-+]?[0-9]+e/) sub(/e/, \".0e\", v); print v }' %s", k, res)))
+err(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { v = $3; if (v ~ /^[-+]?[0-9]+e/) sub(/e/, \".0e\", v); print v }' %s", k, res)))
 estars = system(sprintf("awk -F'\t' 'NR > 1 { print $1 }' %s | sort -u -g | tr '\n' ' '", strips))
 forces = system(sprintf("awk -F'\t' 'NR > 1 { print $2 }' %s | sort -u -g | tr '\n' ' '", strips))
 ne = words(estars); nf = words(forces)
