@@ -12,7 +12,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 scenes=$(cd "$here/../sim/scenes" && pwd)
 # layout-1 files: the archived runs, or the records cut from them (wetgran-reduce)
 archive=$here/../data/runs
-[ -e "$archive/fig3_2/full/seed1.h5" ] || archive=$here/../data/records
+[ -e "$archive/fig3_2/full/seed1.h5" ] && [ -e "$archive/fig3_4a/full/G15_E1.4.h5" ] || archive=$here/../data/records
 py=/usr/bin/python3
 . "$here/checks.sh"
 
