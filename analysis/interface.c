@@ -712,10 +712,8 @@ static int run_times(const char *file, const options *o, double **t, hsize_t *n)
   hid_t f = wg_run_open(file);
   if (f < 0) return 1;
   field head = {.file = file};
-  options per_frame = *o;
-  per_frame.window = 1; /* never the time-averaged profile */
   int rc = run_head(f, &head);
-  if (!rc && pick_source(f, &head, &per_frame, 0) == SOURCE_MAPS) {
+  if (!rc && pick_source(f, &head, o, 0) == SOURCE_MAPS /* frame 0: never the profile */) {
     rc = maps_times(f, file, t, n);
   } else if (!rc) {
     snaps s = {0};

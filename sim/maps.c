@@ -16,20 +16,12 @@ int wg_map_init(wg_map *m, int nx, int ny, int dim, double lx, double ly, double
   if (nx <= 0) return WG_OK;
   *m = (wg_map){.nx = nx, .ny = dim == 3 ? ny : 1, .dim = dim, .lx = lx, .ly = ly,
                 .start = start, .window = window, .samples = samples};
-  size_t c = cells(m);
-  m->count = calloc(c, sizeof(double));
-  m->mass = calloc(c, sizeof(double));
-  m->mom = calloc(3 * c, sizeof(double));
-  m->mv2 = calloc(c, sizeof(double));
-  m->bridges = calloc(c, sizeof(double));
-  if (!m->count || !m->mass || !m->mom || !m->mv2 || !m->bridges)
-    return wg_error(WG_ENOMEM, "maps", "cannot allocate %d x %d cells", m->nx, m->ny);
-  return WG_OK;
+  return wg_cellsums_alloc(&m->sums, cells(m), 0);
 }
 
 void wg_map_free(wg_map *m)
 {
-  free(m->count); free(m->mass); free(m->mom); free(m->mv2); free(m->bridges);
+  wg_cellsums_free(&m->sums);
   free(m->time); free(m->density); free(m->bridge_density); free(m->temperature);
   memset(m, 0, sizeof *m);
 }
@@ -40,7 +32,7 @@ double wg_map_next_time(const wg_map *m)
   return m->start + (double)m->k * (m->window / m->samples);
 }
 
-void wg_map_add(wg_map *m, const double r[3], const double v[3], double mass, double bridges)
+void wg_map_add(wg_map *m, const double r[3], const double v[3], double mass, int bridges)
 {
   int bx = (int)(r[0] / m->lx * m->nx), by = 0;
   if (bx >= m->nx) bx = m->nx - 1;
@@ -50,14 +42,7 @@ void wg_map_add(wg_map *m, const double r[3], const double v[3], double mass, do
     if (by >= m->ny) by = m->ny - 1;
     if (by < 0) by = 0;
   }
-  size_t c = (size_t)by * (size_t)m->nx + (size_t)bx;
-  m->count[c] += 1;
-  m->mass[c] += mass;
-  for (int a = 0; a < m->dim; a++) {
-    m->mom[3 * c + (size_t)a] += mass * v[a];
-    m->mv2[c] += mass * v[a] * v[a];
-  }
-  m->bridges[c] += 0.5 * bridges;
+  wg_cellsums_add(&m->sums, (size_t)by * (size_t)m->nx + (size_t)bx, m->dim, v, mass, 0, bridges);
 }
 
 /* Close the open window: its fields become a frame, its sums start again from zero. */
@@ -83,20 +68,14 @@ static int flush_window(wg_map *m)
   long long w = m->k / m->samples - 1; /* the window just completed */
   double dts = m->window / m->samples;
   m->time[m->nframes] = m->start + ((double)w * m->samples + 0.5 * (m->samples - 1)) * dts;
+  const wg_cellsums *u = &m->sums;
   for (size_t i = 0; i < c; i++) {
-    double p2 = 0;
-    for (int a = 0; a < m->dim; a++) p2 += m->mom[3 * i + (size_t)a] * m->mom[3 * i + (size_t)a];
-    m->density[o + i] = m->count[i] * norm;
-    m->bridge_density[o + i] = m->bridges[i] * norm;
-    /* Eq. 3.2 in the cell: sum m |v - V_cell|^2 / (count D), V_cell over the whole window */
-    m->temperature[o + i] = m->count[i] > 0 ? (m->mv2[i] - p2 / m->mass[i]) / (m->count[i] * m->dim) : NAN;
+    m->density[o + i] = u->count[i] * norm;
+    m->bridge_density[o + i] = u->bridges[i] * norm;
+    m->temperature[o + i] = wg_cellsums_temperature(u, i, m->dim);
   }
   m->nframes++;
-  memset(m->count, 0, sizeof(double) * c);
-  memset(m->mass, 0, sizeof(double) * c);
-  memset(m->mom, 0, 3 * sizeof(double) * c);
-  memset(m->mv2, 0, sizeof(double) * c);
-  memset(m->bridges, 0, sizeof(double) * c);
+  wg_cellsums_clear(&m->sums);
   return WG_OK;
 }
 
@@ -155,16 +134,10 @@ int wg_map_checkpoint_write(const wg_map *m, hid_t f)
 {
   if (m->nx <= 0) return WG_OK;
   size_t c = cells(m);
-  hsize_t d1[1] = {c}, d3[1] = {3 * c}, df[1] = {(hsize_t)m->nframes * c},
-          dt[1] = {(hsize_t)m->nframes};
+  hsize_t df[1] = {(hsize_t)m->nframes * c}, dt[1] = {(hsize_t)m->nframes};
   long long k[2] = {m->k, m->nframes};
   hsize_t d2[1] = {2};
-  int st = WG_OK;
-  st |= wg_h5_write(f, "run/map_count", H5T_NATIVE_DOUBLE, 1, d1, m->count, "-", "map sums");
-  st |= wg_h5_write(f, "run/map_mass", H5T_NATIVE_DOUBLE, 1, d1, m->mass, "-", "map sums");
-  st |= wg_h5_write(f, "run/map_mom", H5T_NATIVE_DOUBLE, 1, d3, m->mom, "-", "map sums");
-  st |= wg_h5_write(f, "run/map_mv2", H5T_NATIVE_DOUBLE, 1, d1, m->mv2, "-", "map sums");
-  st |= wg_h5_write(f, "run/map_bridges", H5T_NATIVE_DOUBLE, 1, d1, m->bridges, "-", "map sums");
+  int st = wg_cellsums_checkpoint_write(&m->sums, f, "run/map_");
   st |= wg_h5_write(f, "run/map_counters", H5T_NATIVE_LLONG, 1, d2, k, "1", "sample, frames");
   if (m->nframes > 0) {
     st |= wg_h5_write(f, "run/map_time", H5T_NATIVE_DOUBLE, 1, dt, m->time, "tau", "frames");
@@ -195,11 +168,7 @@ int wg_map_checkpoint_read(wg_map *m, hid_t f, const char *path)
   size_t c = cells(m);
   long long k[2];
   int st = read_exact(f, path, "run/map_counters", H5T_NATIVE_LLONG, k, 2);
-  if (st == WG_OK) st = read_exact(f, path, "run/map_count", H5T_NATIVE_DOUBLE, m->count, c);
-  if (st == WG_OK) st = read_exact(f, path, "run/map_mass", H5T_NATIVE_DOUBLE, m->mass, c);
-  if (st == WG_OK) st = read_exact(f, path, "run/map_mom", H5T_NATIVE_DOUBLE, m->mom, 3 * c);
-  if (st == WG_OK) st = read_exact(f, path, "run/map_mv2", H5T_NATIVE_DOUBLE, m->mv2, c);
-  if (st == WG_OK) st = read_exact(f, path, "run/map_bridges", H5T_NATIVE_DOUBLE, m->bridges, c);
+  if (st == WG_OK) st = wg_cellsums_checkpoint_read(&m->sums, f, path, "run/map_");
   if (st != WG_OK) return st;
   m->k = k[0];
   long nf = (long)k[1];

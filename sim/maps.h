@@ -11,14 +11,15 @@
 
 #include <hdf5.h>
 
+#include "cellsums.h"
+
 typedef struct wg_map {
   int nx, ny, dim;
   double lx, ly;              /* lateral box lengths (ly unused in 2D) */
   double start, window;       /* first window begins at start; windows of this length */
   int samples;                /* samples per window */
   long long k;                /* next sample index, counted from start */
-  /* sums of the open window, per cell: count, mass, momentum (3 per cell), m v^2, bridges */
-  double *count, *mass, *mom, *mv2, *bridges;
+  wg_cellsums sums;           /* of the open window (no volumes) */
   /* finished frames: time (window centre) and, per cell, the three fields */
   long nframes, cap;
   double *time, *density, *bridge_density, *temperature;
@@ -33,7 +34,7 @@ void wg_map_free(wg_map *m);
 double wg_map_next_time(const wg_map *m);
 
 /* One sample: call wg_map_add for every particle, then wg_map_end_sample. */
-void wg_map_add(wg_map *m, const double r[3], const double v[3], double mass, double bridges);
+void wg_map_add(wg_map *m, const double r[3], const double v[3], double mass, int bridges);
 int wg_map_end_sample(wg_map *m);
 
 /* Run file: /observables/maps/{number_density,bridge_density,temperature}/{step,time,value}

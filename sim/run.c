@@ -219,22 +219,7 @@ static int profile_alloc(wg_profile *pr, int bins)
 {
   pr->bins = bins;
   pr->samples = 0;
-  size_t b = (size_t)(bins > 0 ? bins : 1);
-  pr->count = calloc(b, sizeof(double));
-  pr->volume = calloc(b, sizeof(double));
-  pr->mass = calloc(b, sizeof(double));
-  pr->mom = calloc(3 * b, sizeof(double));
-  pr->mv2 = calloc(b, sizeof(double));
-  pr->bridges = calloc(b, sizeof(double));
-  if (!pr->count || !pr->volume || !pr->mass || !pr->mom || !pr->mv2 || !pr->bridges)
-    return wg_error(WG_ENOMEM, "profiles", "cannot allocate %d bins", bins);
-  return WG_OK;
-}
-
-static void profile_free(wg_profile *pr)
-{
-  free(pr->count); free(pr->volume); free(pr->mass); free(pr->mom); free(pr->mv2);
-  free(pr->bridges);
+  return wg_cellsums_alloc(&pr->sums, (size_t)(bins > 0 ? bins : 1), 1);
 }
 
 /* One sample of the lateral profiles: every particle adds to the bin of its x coordinate;
@@ -252,14 +237,8 @@ static void sample_profile(wg_run *run)
     int b = (int)(r[0] / width);
     if (b >= pr->bins) b = pr->bins - 1;
     if (b < 0) b = 0;
-    pr->count[b] += 1;
-    pr->volume[b] += unit_volume * pow(radius, dim);
-    pr->mass[b] += m;
-    for (int k = 0; k < dim; k++) {
-      pr->mom[3 * b + k] += m * v[k];
-      pr->mv2[b] += m * v[k] * v[k];
-    }
-    if (nbond) pr->bridges[b] += 0.5 * nbond[i];
+    wg_cellsums_add(&pr->sums, (size_t)b, dim, v, m, unit_volume * pow(radius, dim),
+                    nbond ? nbond[i] : 0);
   }
   pr->samples++;
 }
@@ -479,14 +458,7 @@ static int ckpt_write_observers(wg_run *run, hid_t f)
   int st = WG_OK;
   hsize_t ds[2] = {run->rows, NCOL};
   st |= wg_h5_write(f, "run/series", H5T_NATIVE_DOUBLE, 2, ds, run->series, "-", "time series rows");
-  int bins = run->prof.bins > 0 ? run->prof.bins : 1;
-  hsize_t dp[1] = {(hsize_t)bins}, dpm[1] = {3 * (hsize_t)bins};
-  st |= wg_h5_write(f, "run/prof_count", H5T_NATIVE_DOUBLE, 1, dp, run->prof.count, "-", "profile sums");
-  st |= wg_h5_write(f, "run/prof_volume", H5T_NATIVE_DOUBLE, 1, dp, run->prof.volume, "-", "profile sums");
-  st |= wg_h5_write(f, "run/prof_mass", H5T_NATIVE_DOUBLE, 1, dp, run->prof.mass, "-", "profile sums");
-  st |= wg_h5_write(f, "run/prof_mom", H5T_NATIVE_DOUBLE, 1, dpm, run->prof.mom, "-", "profile sums");
-  st |= wg_h5_write(f, "run/prof_mv2", H5T_NATIVE_DOUBLE, 1, dp, run->prof.mv2, "-", "profile sums");
-  st |= wg_h5_write(f, "run/prof_bridges", H5T_NATIVE_DOUBLE, 1, dp, run->prof.bridges, "-", "profile sums");
+  st |= wg_cellsums_checkpoint_write(&run->prof.sums, f, "run/prof_");
   hsize_t df[1] = {(hsize_t)run->nframes};
   if (run->nframes) {
     st |= wg_h5_write(f, "run/frame_time", H5T_NATIVE_DOUBLE, 1, df, run->frame_time, "tau", "frame times");
@@ -681,13 +653,7 @@ static int ckpt_load_observers(wg_run *run, hid_t f)
       for (size_t c = NCOL; c-- > 0;)
         run->series[r * NCOL + c] = c < width ? run->series[r * width + c] : 0;
   }
-  int bins = run->prof.bins > 0 ? run->prof.bins : 1;
-  if (st == WG_OK) st = read_into(f, ck, "run/prof_count", H5T_NATIVE_DOUBLE, run->prof.count, (hsize_t)bins);
-  if (st == WG_OK) st = read_into(f, ck, "run/prof_volume", H5T_NATIVE_DOUBLE, run->prof.volume, (hsize_t)bins);
-  if (st == WG_OK) st = read_into(f, ck, "run/prof_mass", H5T_NATIVE_DOUBLE, run->prof.mass, (hsize_t)bins);
-  if (st == WG_OK) st = read_into(f, ck, "run/prof_mom", H5T_NATIVE_DOUBLE, run->prof.mom, 3 * (hsize_t)bins);
-  if (st == WG_OK) st = read_into(f, ck, "run/prof_mv2", H5T_NATIVE_DOUBLE, run->prof.mv2, (hsize_t)bins);
-  if (st == WG_OK) st = read_into(f, ck, "run/prof_bridges", H5T_NATIVE_DOUBLE, run->prof.bridges, (hsize_t)bins);
+  if (st == WG_OK) st = wg_cellsums_checkpoint_read(&run->prof.sums, f, ck, "run/prof_");
   if (st == WG_OK && k[5] > 0) {
     run->frame_time = malloc(sizeof(double) * (size_t)k[5]);
     run->frame_bonds = malloc(sizeof(long long) * (size_t)k[5]);
@@ -928,12 +894,10 @@ static int write_profiles(wg_run *run, hid_t f)
   double samples = pr->samples > 0 ? (double)pr->samples : NAN;
   for (int k = 0; k < b; k++) {
     x[k] = (k + 0.5) * width;
-    nd[k] = pr->count[k] / (samples * width * cross);
-    pf[k] = pr->volume[k] / (samples * width * cross * height);
-    double p2 = 0;
-    for (int a = 0; a < dim; a++) p2 += pr->mom[3 * k + a] * pr->mom[3 * k + a];
-    tg[k] = pr->count[k] > 0 ? (pr->mv2[k] - p2 / pr->mass[k]) / (pr->count[k] * dim) : NAN;
-    ncb[k] = pr->bridges[k] / (samples * width * cross);
+    nd[k] = pr->sums.count[k] / (samples * width * cross);
+    pf[k] = pr->sums.volume[k] / (samples * width * cross * height);
+    tg[k] = wg_cellsums_temperature(&pr->sums, (size_t)k, dim);
+    ncb[k] = pr->sums.bridges[k] / (samples * width * cross);
   }
   hsize_t dims[1] = {(hsize_t)b};
   const char *per_area = dim == 3 ? "d-2" : "d-1";
@@ -1466,7 +1430,7 @@ void wg_run_free(wg_run *run)
   free(run->series);
   free(run->frame_time);
   free(run->frame_bonds);
-  profile_free(&run->prof);
+  wg_cellsums_free(&run->prof.sums);
   wg_map_free(&run->map);
   memset(run, 0, sizeof *run);
 }

@@ -9,6 +9,7 @@
 #include "ed.h"
 #include "td.h"
 #include "maps.h"
+#include "cellsums.h"
 
 typedef struct wg_run_options {
   const char *out_path;      /* RUN.h5 */
@@ -25,7 +26,7 @@ typedef struct wg_run_options {
 typedef struct wg_profile {
   int bins;
   long samples;
-  double *count, *volume, *mass, *mom, *mv2, *bridges; /* mom: bins x 3 */
+  wg_cellsums sums; /* with particle volumes (the packing fraction) */
 } wg_profile;
 
 /* What the user sees while a run goes on: the progress line, the batch log, the stall watch.
