@@ -127,7 +127,8 @@ static int usage(FILE *o, int rc)
     "  --ends EF:EG        E*_f-fgc and E*_fgc-g: estar_tilde = (E* - EF)/(EG - EF)\n"
     "  --ends auto         ag: the ends from the scan itself, each the midpoint between the\n"
     "                      last one-phase run (a_g = 0, resp. 1) and the first coexisting one\n"
-    "                      (0 < a_g < 1), +- half their gap (a '# ends' line); not with --window\n"
+    "                      (0 < a_g < 1), +- half their gap (a '# ends' line); an end the scan\n"
+    "                      does not bracket is nan (and E~* with it); not with --window\n"
     "  --h5 FILE          ag: also write the table to FILE (HDF5: /ag/<column>, one value\n"
     "                      per run; /ag/file the run names; attribute threshold on /ag)\n"
     "  --fsmax F, --sigma S, --x COL, --y COL, --xmin X, --xmax X  (strip, relax, powerfit)\n"
@@ -853,15 +854,20 @@ static int mode_ag(int nf, char **files, const options *o)
       if (rows[r].a_g == 0 && fds[r].estar < c0) f1 = fmax(f1, fds[r].estar);
       if (rows[r].a_g == 1 && fds[r].estar > c1) g0 = fmin(g0, fds[r].estar);
     }
-    if (!isfinite(c0) || !isfinite(f1) || !isfinite(g0)) {
-      fprintf(stderr, PROG ": --ends auto: the scan needs a coexisting run with a one-phase "
-              "fluid run below it and a gas run above it\n");
+    if (!isfinite(c0)) {
+      fprintf(stderr, PROG ": --ends auto: no coexisting run (0 < a_g < 1) in the scan\n");
       rc = 1;
     } else {
-      ef = 0.5 * (f1 + c0);
-      eg = 0.5 * (c1 + g0);
+      /* an end the scan does not bracket (no fluid run below, no gas run above) is nan, and
+         so is E~*; said on stderr */
+      ef = isfinite(f1) ? 0.5 * (f1 + c0) : NAN;
+      eg = isfinite(g0) ? 0.5 * (c1 + g0) : NAN;
+      if (!isfinite(f1))
+        fprintf(stderr, PROG ": --ends auto: no fluid run (a_g = 0) below E* = %g: E*_f-fgc is nan\n", c0);
+      if (!isfinite(g0))
+        fprintf(stderr, PROG ": --ends auto: no gas run (a_g = 1) above E* = %g: E*_fgc-g is nan\n", c1);
       printf("# ends from the scan: E*_f-fgc = %.6g +- %.3g, E*_fgc-g = %.6g +- %.3g\n", ef,
-             0.5 * (c0 - f1), eg, 0.5 * (g0 - c1));
+             isfinite(f1) ? 0.5 * (c0 - f1) : NAN, eg, isfinite(g0) ? 0.5 * (g0 - c1) : NAN);
     }
   }
   if (!rc) {

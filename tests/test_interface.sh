@@ -51,9 +51,13 @@ check "--ends auto: the ends from the scan, 7 +- 1 and 11 +- 1" \
   grep -q '^# ends from the scan: E\*_f-fgc = 7 +- 1, E\*_fgc-g = 11 +- 1$' "$tmp/auto.out"
 check "--ends auto: E* = 8 gives estar_tilde 0.25, E* = 12 gives 1.25" \
   test "$(col estar_tilde "$tmp/auto.out" 3) $(col estar_tilde "$tmp/auto.out" 5)" = "0.25 1.25"
-"$tool" ag --ends auto "$tmp"/e8.h5 "$tmp"/e10.h5 "$tmp"/e12.h5 > /dev/null 2> "$tmp/auto.err"; rc=$?
-check "--ends auto without a fluid run below the coexistence: refused" \
-  bash -c "[ $rc -ne 0 ] && grep -q 'one-phase fluid run below' '$tmp/auto.err'"
+"$tool" ag --ends auto "$tmp"/e8.h5 "$tmp"/e10.h5 "$tmp"/e12.h5 > "$tmp/auto1.out" 2> "$tmp/auto.err"; rc=$?
+check "--ends auto without a fluid run below the coexistence: E*_f-fgc nan, said on stderr, the gas end still 11 +- 1" \
+  bash -c "[ $rc -eq 0 ] && grep -q 'no fluid run (a_g = 0) below E\* = 8: E\*_f-fgc is nan' '$tmp/auto.err' && grep -q '^# ends from the scan: E\*_f-fgc = nan +- nan, E\*_fgc-g = 11 +- 1$' '$tmp/auto1.out'"
+check "--ends auto without a fluid run: estar_tilde nan" test "$(col estar_tilde "$tmp/auto1.out")" = nan
+"$tool" ag --ends auto "$tmp"/e4.h5 "$tmp"/e12.h5 > /dev/null 2> "$tmp/auto3.err"; rc=$?
+check "--ends auto with no coexisting run: refused" \
+  bash -c "[ $rc -ne 0 ] && grep -q 'no coexisting run' '$tmp/auto3.err'"
 "$tool" ag --ends auto --window 10 "$tmp"/e8.h5 > /dev/null 2> "$tmp/auto2.err"; rc=$?
 check "--ends auto with --window: refused (exit 2)" test "$rc" -eq 2
 

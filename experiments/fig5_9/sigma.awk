@@ -1,11 +1,13 @@
 # Figs. 5.9-5.11's numbers: first file preps.tsv (wetgran-interface ag --ends auto on the
-# preps), second strips.tsv (one row per sheared run).  Per sheared E*: the line
-# A~_d = s F_smax through the origin over the forces F_smax L_x / E_cb <= fitmax (least squares
-# weighted by the fits' errors, the slope's error scaled by sqrt(chi^2/dof)), N_p's mean, sigma = N_p / ((2 pi)^2 s) (Eq. 5.9, m g),
-# sigma / gamma with gamma = F_B / (pi d) = E_cb / (s_crit pi) (Eq. 2.8), Eq. 5.10's mean.
-FNR == NR && /^#/ { next }
-FNR == NR && $1 == "file" { for (i = 1; i <= NF; i++) pc[$i] = i; next }
-FNR == NR { np_++; pe[np_] = $pc["estar"]; pa[np_] = $pc["a_g"]; next }
+# preps: its '# ends' line, nan where the scan does not bracket an end), second strips.tsv
+# (one row per sheared run).  Per sheared E*: the line A~_d = s F_smax through the origin
+# over the forces F_smax L_x / E_cb <= fitmax (least squares weighted by the fits' errors, the
+# slope's error scaled by sqrt(chi^2/dof)), N_p's mean, sigma = N_p / ((2 pi)^2 s) (Eq. 5.9,
+# m g), sigma / gamma with gamma = F_B / (pi d) = E_cb / (s_crit pi) (Eq. 2.8), Eq. 5.10's mean.
+FNR == NR && /^# ends from the scan/ {
+  split($0, w, " "); ef = w[8]; efe = w[10]; eg = w[13]; ege = w[15]; sub(",", "", efe); next
+}
+FNR == NR { next }
 FNR == 1 { next }
 {
   e = $1; if (!(e in seen)) { seen[e] = 1; order[++ne] = e }
@@ -15,18 +17,8 @@ FNR == 1 { next }
 }
 END {
   pi = 3.14159265358979; gam = ecb / (scrit * pi)
-  # the preps: coexisting ones span [c0, c1]; f1 the last fluid below, g0 the first gas above
-  c0 = 1e300; c1 = -1e300; f1 = -1e300; g0 = 1e300
-  for (i = 1; i <= np_; i++) if (pa[i] > 0 && pa[i] < 1) { if (pe[i] < c0) c0 = pe[i]; if (pe[i] > c1) c1 = pe[i] }
-  for (i = 1; i <= np_; i++) {
-    if (pa[i] == 0 && pe[i] < c0 && pe[i] > f1) f1 = pe[i]
-    if (pa[i] == 1 && pe[i] > c1 && pe[i] < g0) g0 = pe[i]
-  }
-  ef = (c0 < 1e300 && f1 > -1e300) ? (f1 + c0) / 2 : "nan"; efe = ef == "nan" ? "nan" : (c0 - f1) / 2
-  eg = (c1 > -1e300 && g0 < 1e300) ? (c1 + g0) / 2 : "nan"; ege = eg == "nan" ? "nan" : (g0 - c1) / 2
   print "key\tvalue\terror"
   printf "estar_f_fgc\t%s\t%s\nestar_fgc_g\t%s\t%s\n", ef, efe, eg, ege
-  printf "estar_last_coexisting_prep\t%s\tnan\n", (c1 > -1e300 ? c1 : "nan")
   falls = 1; npfalls = 1; prev = ""
   for (i = 1; i <= ne; i++) {
     e = order[i]; sxx = 0; sxy = 0
