@@ -286,35 +286,77 @@ static inline void probe_at_now(const wg_ed *s, long i, probe *pr)
   }
 }
 
+/* The bonded pair's next arrival at the gap s_crit (thin-thread model), given r2 = |dr|^2,
+   bdot = dr.dv and a = |dv|^2 at now. */
+static void predict_bridge_edge(const wg_ed *s, double now, long j, double sigma, double r2,
+                                double bdot, double a, candidate *best)
+{
+  double edge = sigma + s->s_crit;
+  double c = r2 - edge * edge;
+  double t;
+  if (c >= 0 && bdot > REST_SPEED * edge) {
+    t = 0;
+  } else if (c >= 0) {
+    /* on (or, by round-off, just beyond) the edge, moving in or at rest: back at the far
+       root, and not before the pair moves out faster than REST_SPEED (bdot grows as a t) */
+    if (a == 0) return;
+    double disc = bdot * bdot - a * c;
+    t = fmax((-bdot + sqrt(disc > 0 ? disc : 0)) / a, (REST_SPEED * edge - bdot) / a);
+  } else {
+    if (a == 0) return;
+    double disc = bdot * bdot - a * c;
+    t = bdot > 0 ? -c / (bdot + sqrt(disc)) : (-bdot + sqrt(disc)) / a;
+  }
+  consider(best, now + t, WG_EV_BRIDGE_EDGE, j);
+}
+
+/* Minimum image of one component of a separation. */
+static inline __attribute__((always_inline)) double min_image(double x, double half, double box)
+{
+  if (x > half) return x - box;
+  if (x < -half) return x + box;
+  return x;
+}
+
 /* Earliest event of the pair (probe, j): hard-core contact while approaching (Eq. B.3), or,
    for a bonded pair, the moment the gap reaches s_crit.  Overlapping pairs that approach
    collide at once; overlapping pairs that separate are left alone (App. B.5.6).  Relative
    motion is free flight: gravity drops out.  dim is a constant at each call site, so the
-   compiler specialises the loops. */
+   compiler specialises the code; the separation is kept in scalars (the hot loop of the
+   engine: every operation is the one of the plain formula, in the same order). */
 static inline __attribute__((always_inline)) void
 predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim)
 {
   const wg_particle *b = &s->p[j];
   double dt = pr->now - b->t;
-  double dr[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
-  for (int k = 0; k < dim; k++) {
-    dr[k] = b->r[k] + b->v[k] * dt - pr->r[k];
-    dv[k] = b->v[k] - pr->v[k];
+  double x = b->r[0] + b->v[0] * dt - pr->r[0], u = b->v[0] - pr->v[0];
+  double y = b->r[1] + b->v[1] * dt - pr->r[1], v = b->v[1] - pr->v[1];
+  double z = 0, w = 0;
+  if (dim == 3) {
+    z = b->r[2] + b->v[2] * dt - pr->r[2];
+    w = b->v[2] - pr->v[2];
   }
-  if (pr->g > 0) {
-    dr[pr->up] -= 0.5 * pr->g * dt * dt;
-    dv[pr->up] -= pr->g * dt;
-  }
-  for (int k = 0; k < dim; k++)
-    if (pr->periodic[k]) {
-      if (dr[k] > pr->half[k]) dr[k] -= pr->box[k];
-      else if (dr[k] < -pr->half[k]) dr[k] += pr->box[k];
+  if (pr->g > 0) { /* the vertical axis is the last one */
+    if (dim == 3) {
+      z -= 0.5 * pr->g * dt * dt;
+      w -= pr->g * dt;
+    } else {
+      y -= 0.5 * pr->g * dt * dt;
+      v -= pr->g * dt;
     }
-  double bdot = dot(dr, dv, dim);
+  }
+  if (pr->periodic[0]) x = min_image(x, pr->half[0], pr->box[0]);
+  if (pr->periodic[1]) y = min_image(y, pr->half[1], pr->box[1]);
+  if (dim == 3 && pr->periodic[2]) z = min_image(z, pr->half[2], pr->box[2]);
+  double bdot = x * u + y * v;
+  if (dim == 3) bdot += z * w;
   int bonded = pr->wet && wg_ed_bonded(s, pr->i, j);
   if (bdot >= 0 && !bonded) return; /* receding and free: nothing can happen */
-  double r2 = dot(dr, dr, dim);
-  double a = dot(dv, dv, dim);
+  double r2 = x * x + y * y, a = u * u + v * v;
+  if (dim == 3) {
+    r2 += z * z;
+    a += w * w;
+  }
   double sigma = pr->radius + b->radius;
   if (bdot < 0) {
     double c = r2 - sigma * sigma;
@@ -328,24 +370,66 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
       return;
     }
   }
-  if (bonded) {
-    double edge = sigma + s->s_crit;
-    double c = r2 - edge * edge;
-    double t;
-    if (c >= 0 && bdot > REST_SPEED * edge) {
-      t = 0;
-    } else if (c >= 0) {
-      /* on (or, by round-off, just beyond) the edge, moving in or at rest: back at the far
-         root, and not before the pair moves out faster than REST_SPEED (bdot grows as a t) */
-      if (a == 0) return;
-      double disc = bdot * bdot - a * c;
-      t = fmax((-bdot + sqrt(disc > 0 ? disc : 0)) / a, (REST_SPEED * edge - bdot) / a);
+  if (bonded) predict_bridge_edge(s, pr->now, j, sigma, r2, bdot, a, best);
+}
+
+/* t if ok, else INFINITY, without a branch (the compiler turns a ?: into one). */
+static inline double keep_or_inf(int ok, double t)
+{
+  uint64_t bits, inf = 0x7ff0000000000000ULL, mask = -(uint64_t)ok;
+  memcpy(&bits, &t, sizeof bits);
+  bits = (bits & mask) | (inf & ~mask);
+  memcpy(&t, &bits, sizeof t);
+  return t;
+}
+
+/* predict_pair for a dry pair: contact only.  Whether the pair approaches and whether the
+   paths meet are each a coin toss, so the root is computed for every pair and kept or dropped
+   without a branch (same operations, same value as predict_pair when it is kept). */
+static inline __attribute__((always_inline)) void
+predict_contact(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim)
+{
+  const wg_particle *b = &s->p[j];
+  double dt = pr->now - b->t;
+  double x = b->r[0] + b->v[0] * dt - pr->r[0], u = b->v[0] - pr->v[0];
+  double y = b->r[1] + b->v[1] * dt - pr->r[1], v = b->v[1] - pr->v[1];
+  double z = 0, w = 0;
+  if (dim == 3) {
+    z = b->r[2] + b->v[2] * dt - pr->r[2];
+    w = b->v[2] - pr->v[2];
+  }
+  if (pr->g > 0) {
+    if (dim == 3) {
+      z -= 0.5 * pr->g * dt * dt;
+      w -= pr->g * dt;
     } else {
-      if (a == 0) return;
-      double disc = bdot * bdot - a * c;
-      t = bdot > 0 ? -c / (bdot + sqrt(disc)) : (-bdot + sqrt(disc)) / a;
+      y -= 0.5 * pr->g * dt * dt;
+      v -= pr->g * dt;
     }
-    consider(best, pr->now + t, WG_EV_BRIDGE_EDGE, j);
+  }
+  if (pr->periodic[0]) x = min_image(x, pr->half[0], pr->box[0]);
+  if (pr->periodic[1]) y = min_image(y, pr->half[1], pr->box[1]);
+  if (dim == 3 && pr->periodic[2]) z = min_image(z, pr->half[2], pr->box[2]);
+  double bdot = x * u + y * v;
+  double r2 = x * x + y * y, a = u * u + v * v;
+  if (dim == 3) {
+    bdot += z * w;
+    r2 += z * z;
+    a += w * w;
+  }
+  double sigma = pr->radius + b->radius;
+  double c = r2 - sigma * sigma;
+  if (__builtin_expect(c <= 0, 0)) { /* overlap */
+    if (bdot < -REST_SPEED * sigma) consider(best, pr->now, WG_EV_COLLISION, j);
+    return;
+  }
+  double disc = bdot * bdot - a * c;
+  double t = pr->now + c / (-bdot + sqrt(disc > 0 ? disc : 0));
+  t = keep_or_inf((bdot < 0) & (disc > 0), t);
+  if (t < best->t) {
+    best->t = t;
+    best->type = WG_EV_COLLISION;
+    best->partner = (int32_t)j;
   }
 }
 
@@ -363,6 +447,18 @@ static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncel
   probe pr;
   probe_at_now(s, i, &pr);
   const int32_t *head = s->cells.head, *next = s->cells.next;
+  if (!s->wet) {
+    if (s->dim == 3) {
+      for (int k = 0; k < ncells; k++)
+        for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
+          if (j != i) predict_contact(s, &pr, j, best, 3);
+    } else {
+      for (int k = 0; k < ncells; k++)
+        for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
+          if (j != i) predict_contact(s, &pr, j, best, 2);
+    }
+    return;
+  }
   if (s->dim == 3) {
     for (int k = 0; k < ncells; k++)
       for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
@@ -1129,7 +1225,7 @@ size_t wg_ed_bytes(const wg_ed *s)
                sizeof *s->ev_count + sizeof *s->ev_type + sizeof *s->t_cell + sizeof *s->cell_axis +
                sizeof *s->cell_dir + sizeof *s->key + 3 * sizeof(int32_t) /* cell lists */ +
                2 * sizeof(int32_t) /* id, slot */;
-  size_t bytes = n * per + 2 * (size_t)s->queue.size * sizeof(int32_t) +
+  size_t bytes = n * per + wg_evqueue_bytes(&s->queue) +
                  (size_t)s->cells.ncell * sizeof(int32_t);
   if (s->mass) bytes += n * sizeof *s->mass;
   if (s->t_last) bytes += n * sizeof *s->t_last;
