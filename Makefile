@@ -2,7 +2,8 @@
 #   make            build every tool into bin/
 #   make demo       the main job: a small real figure (thesis Fig. 3.2, event-driven)
 #   make test       build and run the tests (SANITIZE=1: under ASan + UBSan)
-#   make bench      benchmarks (numbers go to tests/bench/out/)
+#   make bench      benchmarks (numbers go to tests/bench/out/; EDMD_SRC=<EDMD Single/> adds EDMD)
+#   make bench-large  free cooling of 2.5e6 wet spheres (minutes, ~0.7 GB; not in CI)
 #   make docs-figures  the pictures of docs/ (docs/figures/<id>.png)
 # make, demo, test, bench and the figures first install the Debian packages they need
 # (scripts/install-deps.sh; nothing is done when all are there).
@@ -41,7 +42,7 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 BENCH_SRC := $(wildcard tests/bench/bench_*.c)
 BENCH_BIN := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
-.PHONY: all deps demo test bench clean tools tests-build
+.PHONY: all deps demo test bench bench-large clean tools tests-build
 .DELETE_ON_ERROR:
 
 all: deps
@@ -114,7 +115,12 @@ test: deps
 
 bench: deps
 	$(MAKE) tools $(BENCH_BIN)
-	./tests/bench/run.sh $(BUILD)/bench $(BIN)
+	EDMD_SRC="$(EDMD_SRC)" ./tests/bench/run.sh $(BUILD)/bench $(BIN)
+
+# Free cooling of 2.5e6 wet spheres (thesis Fig. 2.6): rate, memory, cluster picture; not in CI.
+bench-large: deps
+	$(MAKE) tools
+	./tests/bench/large.sh $(BIN)
 
 # Figures: make fig3_2 [PROFILE=quick|full]; each is experiments/<id>/.
 PROFILE ?= quick

@@ -32,6 +32,8 @@ enum { BOND_CAP_2D = 8, BOND_CAP_3D = 16 };
    normal energy handed over can rupture a bridge only if 1/2 mu u^2 > E_cb / angle^2. */
 /* Without the TC model, the time scale of wall_min_speed [sqrt(d/g)]. */
 #define WALL_MIN_TIME 1e-12
+/* Most cells per particle of a periodic box (setup_cells). */
+#define CELLS_PER_PARTICLE 8.0
 
 /* ---------- small helpers ---------- */
 
@@ -261,6 +263,7 @@ typedef struct probe {
   double r[3], v[3], radius;
   double now, g, box[3], half[3];
   int periodic[3], up, wet;
+  int bonds;       /* bridges of particle i (wet runs) */
 } probe;
 
 static inline void probe_at_now(const wg_ed *s, long i, probe *pr)
@@ -273,6 +276,7 @@ static inline void probe_at_now(const wg_ed *s, long i, probe *pr)
   pr->g = s->g;
   pr->up = s->up;
   pr->wet = s->wet;
+  pr->bonds = s->wet ? s->nbond[i] : 0;
   for (int k = 0; k < 3; k++) {
     pr->r[k] = a->r[k] + a->v[k] * dt;
     pr->v[k] = a->v[k];
@@ -318,14 +322,27 @@ static inline __attribute__((always_inline)) double min_image(double x, double h
   return x;
 }
 
+/* t if ok, else INFINITY, without a branch (the compiler turns a ?: into one). */
+static inline double keep_or_inf(int ok, double t)
+{
+  uint64_t bits, inf = 0x7ff0000000000000ULL, mask = -(uint64_t)ok;
+  memcpy(&bits, &t, sizeof bits);
+  bits = (bits & mask) | (inf & ~mask);
+  memcpy(&t, &bits, sizeof t);
+  return t;
+}
+
 /* Earliest event of the pair (probe, j): hard-core contact while approaching (Eq. B.3), or,
    for a bonded pair, the moment the gap reaches s_crit.  Overlapping pairs that approach
    collide at once; overlapping pairs that separate are left alone (App. B.5.6).  Relative
-   motion is free flight: gravity drops out.  dim is a constant at each call site, so the
-   compiler specialises the code; the separation is kept in scalars (the hot loop of the
-   engine: every operation is the one of the plain formula, in the same order). */
+   motion is free flight: gravity drops out.  dim and wet are constants at each call site, so
+   the compiler specialises the code.  This is the engine's hot loop: the separation is kept
+   in scalars, and since whether a pair approaches and whether the paths meet are each a coin
+   toss, the contact root is computed for every pair and kept or dropped without a branch
+   (every operation is the one of the plain formula, in the same order). */
 static inline __attribute__((always_inline)) void
-predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim)
+predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim,
+             const int wet)
 {
   const wg_particle *b = &s->p[j];
   double dt = pr->now - b->t;
@@ -349,68 +366,6 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
   if (pr->periodic[1]) y = min_image(y, pr->half[1], pr->box[1]);
   if (dim == 3 && pr->periodic[2]) z = min_image(z, pr->half[2], pr->box[2]);
   double bdot = x * u + y * v;
-  if (dim == 3) bdot += z * w;
-  int bonded = pr->wet && wg_ed_bonded(s, pr->i, j);
-  if (bdot >= 0 && !bonded) return; /* receding and free: nothing can happen */
-  double r2 = x * x + y * y, a = u * u + v * v;
-  if (dim == 3) {
-    r2 += z * z;
-    a += w * w;
-  }
-  double sigma = pr->radius + b->radius;
-  if (bdot < 0) {
-    double c = r2 - sigma * sigma;
-    if (c <= 0) {
-      if (bdot < -REST_SPEED * sigma) consider(best, pr->now, WG_EV_COLLISION, j);
-      return;
-    }
-    double disc = bdot * bdot - a * c;
-    if (disc > 0) {
-      consider(best, pr->now + c / (-bdot + sqrt(disc)), WG_EV_COLLISION, j);
-      return;
-    }
-  }
-  if (bonded) predict_bridge_edge(s, pr->now, j, sigma, r2, bdot, a, best);
-}
-
-/* t if ok, else INFINITY, without a branch (the compiler turns a ?: into one). */
-static inline double keep_or_inf(int ok, double t)
-{
-  uint64_t bits, inf = 0x7ff0000000000000ULL, mask = -(uint64_t)ok;
-  memcpy(&bits, &t, sizeof bits);
-  bits = (bits & mask) | (inf & ~mask);
-  memcpy(&t, &bits, sizeof t);
-  return t;
-}
-
-/* predict_pair for a dry pair: contact only.  Whether the pair approaches and whether the
-   paths meet are each a coin toss, so the root is computed for every pair and kept or dropped
-   without a branch (same operations, same value as predict_pair when it is kept). */
-static inline __attribute__((always_inline)) void
-predict_contact(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim)
-{
-  const wg_particle *b = &s->p[j];
-  double dt = pr->now - b->t;
-  double x = b->r[0] + b->v[0] * dt - pr->r[0], u = b->v[0] - pr->v[0];
-  double y = b->r[1] + b->v[1] * dt - pr->r[1], v = b->v[1] - pr->v[1];
-  double z = 0, w = 0;
-  if (dim == 3) {
-    z = b->r[2] + b->v[2] * dt - pr->r[2];
-    w = b->v[2] - pr->v[2];
-  }
-  if (pr->g > 0) {
-    if (dim == 3) {
-      z -= 0.5 * pr->g * dt * dt;
-      w -= pr->g * dt;
-    } else {
-      y -= 0.5 * pr->g * dt * dt;
-      v -= pr->g * dt;
-    }
-  }
-  if (pr->periodic[0]) x = min_image(x, pr->half[0], pr->box[0]);
-  if (pr->periodic[1]) y = min_image(y, pr->half[1], pr->box[1]);
-  if (dim == 3 && pr->periodic[2]) z = min_image(z, pr->half[2], pr->box[2]);
-  double bdot = x * u + y * v;
   double r2 = x * x + y * y, a = u * u + v * v;
   if (dim == 3) {
     bdot += z * w;
@@ -420,23 +375,38 @@ predict_contact(const wg_ed *s, const probe *pr, long j, candidate *best, const 
   double sigma = pr->radius + b->radius;
   double c = r2 - sigma * sigma;
   if (__builtin_expect(c <= 0, 0)) { /* overlap */
-    if (bdot < -REST_SPEED * sigma) consider(best, pr->now, WG_EV_COLLISION, j);
+    if (bdot < 0) {
+      if (bdot < -REST_SPEED * sigma) consider(best, pr->now, WG_EV_COLLISION, j);
+    } else if (wet && wg_ed_bonded(s, pr->i, j)) {
+      predict_bridge_edge(s, pr->now, j, sigma, r2, bdot, a, best);
+    }
     return;
   }
   double disc = bdot * bdot - a * c;
   double t = pr->now + c / (-bdot + sqrt(disc > 0 ? disc : 0));
-  t = keep_or_inf((bdot < 0) & (disc > 0), t);
+  int hit = (bdot < 0) & (disc > 0);
+  t = keep_or_inf(hit, t);
   if (t < best->t) {
     best->t = t;
     best->type = WG_EV_COLLISION;
     best->partner = (int32_t)j;
   }
+  if (wet && !hit && pr->bonds && wg_ed_bonded(s, pr->i, j))
+    predict_bridge_edge(s, pr->now, j, sigma, r2, bdot, a, best);
 }
 
 static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int ncells,
                                   candidate *best) __attribute__((cold, noinline));
 
 /* Every pair of particle i with the particles of the given cells. */
+/* The loop over the neighbours, specialised for each (dim, wet). */
+#define PAIRS_IN(DIM, WET)                                                                   \
+  do {                                                                                       \
+    for (int k = 0; k < ncells; k++)                                                         \
+      for (int32_t j = head[cells[k]]; j >= 0; j = next[j])                                 \
+        if (j != i) predict_pair(s, &pr, j, best, DIM, WET);                                \
+  } while (0)
+
 static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncells,
                              candidate *best)
 {
@@ -447,26 +417,12 @@ static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncel
   probe pr;
   probe_at_now(s, i, &pr);
   const int32_t *head = s->cells.head, *next = s->cells.next;
-  if (!s->wet) {
-    if (s->dim == 3) {
-      for (int k = 0; k < ncells; k++)
-        for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
-          if (j != i) predict_contact(s, &pr, j, best, 3);
-    } else {
-      for (int k = 0; k < ncells; k++)
-        for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
-          if (j != i) predict_contact(s, &pr, j, best, 2);
-    }
-    return;
-  }
   if (s->dim == 3) {
-    for (int k = 0; k < ncells; k++)
-      for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
-        if (j != i) predict_pair(s, &pr, j, best, 3);
+    if (s->wet) PAIRS_IN(3, 1);
+    else PAIRS_IN(3, 0);
   } else {
-    for (int k = 0; k < ncells; k++)
-      for (int32_t j = head[cells[k]]; j >= 0; j = next[j])
-        if (j != i) predict_pair(s, &pr, j, best, 2);
+    if (s->wet) PAIRS_IN(2, 1);
+    else PAIRS_IN(2, 0);
   }
 }
 
@@ -1140,11 +1096,23 @@ static int setup_cells(wg_ed *s)
   for (long i = 0; i < s->n; i++)
     if (2 * s->p[i].radius > dmax) dmax = 2 * s->p[i].radius;
   double lo[3] = {0, 0, 0}, len[3] = {s->box[0], s->box[1], s->box[2]};
+  double range = dmax + s->s_crit;
   if (s->nwalls) {
     lo[s->up] = -s->wall[0].A;
     len[s->up] = s->box[s->up] + 2 * s->wall[0].A;
+  } else {
+    /* A dilute periodic gas (free cooling, thesis Fig. 2.6: phi = 0.006) would get hundreds of
+       empty cells per particle, bytes and cell crossings for nothing: cells hold at least one
+       particle in CELLS_PER_PARTICLE on average.  Denser gases keep cells one range wide. */
+    double volume = 1, widest = INFINITY; /* a periodic axis keeps 3 cells */
+    for (int k = 0; k < s->dim; k++) {
+      volume *= len[k];
+      widest = fmin(widest, len[k] / 3);
+    }
+    double w = fmin(pow(volume / (CELLS_PER_PARTICLE * (double)s->n), 1.0 / s->dim), widest);
+    if (w > range) range = w;
   }
-  return wg_cells_alloc(&s->cells, s->dim, lo, len, s->periodic, dmax + s->s_crit, s->n);
+  return wg_cells_alloc(&s->cells, s->dim, lo, len, s->periodic, range, s->n);
 }
 
 int wg_ed_alloc_empty(wg_ed *s, const wg_scene *sc, long n)

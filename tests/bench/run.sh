@@ -1,7 +1,9 @@
 #!/bin/bash
 # Benchmarks (numbers for the closing notes; never asserted in tests).
 # Usage: tests/bench/run.sh BENCH_BIN_DIR TOOL_BIN_DIR.  Writes tests/bench/out/bench.tsv.
-# BENCH_ONLY=td_shaker runs only the last part (time-driven shaker: Verlet and Gear).
+# BENCH_ONLY=peers runs only the comparison with EDMD and the baseline engine (peers.sh, which
+# reads EDMD_SRC, BENCH_BASE, REPS, SCAN_MAX); BENCH_ONLY=td_shaker only the last part
+# (time-driven shaker: Verlet and Gear).
 set -eu
 benchdir=${1:?}; bindir=$(cd "${2:?}" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
@@ -33,15 +35,17 @@ run() {
   rm -f "$tmp/run.h5"
 }
 
+if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = peers ]; then
+echo "== the event-driven engine beside EDMD and beside its own baseline commit (tests/bench/peers.sh)"
+"$here/peers.sh" "$bindir"
+[ "${BENCH_ONLY:-}" = peers ] && exit 0
+fi
+
 if [ -z "${BENCH_ONLY:-}" ]; then
 echo "== event rates (events: collisions, bridge ruptures/reflections, wall hits; cell crossings apart)"
 run "a_shake2d"            "$scenes/shake2d.ini" t_end=1000 profile_start=500 dt_checkpoint=0
 run "b_gas3d_N1e5_phi0.3"  "$scenes/gas3d.ini" n=100000 t_end=2
 run "c_shake3d_fig5.2c_N1e4" "$scenes/shake3d_5_2c.ini" t_end=30 dt_checkpoint=0
-echo "== cost per event against N (gas3d, phi = 0.3)"
-for n in 1000 10000 100000 1000000; do
-  run "d_gas3d_N$n" "$scenes/gas3d.ini" n=$n t_end=$(awk -v n=$n "BEGIN { print 2e6 / n }")
-done
 echo "== shear field (issue 42): cost of the hooks when the field is absent or off, and with it on"
 # the same 3D wet shaker three times in a row: no field; a field that is never switched on
 # (every hook's flag is tested, nothing else runs); the field on.  Ratios against the first.
