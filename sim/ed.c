@@ -540,17 +540,17 @@ static void predict_walls(wg_ed *s, long i, candidate *best)
 
 static void schedule(wg_ed *s, long i)
 {
-  s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
+  s->key[i] = s->ev[i].t_phys < s->ev[i].t_cell ? s->ev[i].t_phys : s->ev[i].t_cell;
   wg_evqueue_update(&s->queue, i);
 }
 
 static void set_phys(wg_ed *s, long i, const candidate *best)
 {
-  s->t_phys[i] = best->t;
-  s->ev_type[i] = (uint8_t)best->type;
-  s->ev_partner[i] = best->partner;
+  s->ev[i].t_phys = best->t;
+  s->ev[i].type = (uint8_t)best->type;
+  s->ev[i].partner = best->partner;
   if (best->type == WG_EV_COLLISION || best->type == WG_EV_BRIDGE_EDGE)
-    s->ev_count[i] = s->count[best->partner];
+    s->ev[i].partner_count = s->ev[best->partner].count;
 }
 
 /* The next cell crossing while the field acts: each axis a parabola of its own. */
@@ -563,9 +563,9 @@ static __attribute__((cold, noinline)) void predict_cell_sheared(wg_ed *s, long 
   accel_of(s, i, acc);
   double t = p->t + wg_shear_cell_exit_time(&s->cells, s->cells.cell[i], p->r, p->v, acc,
                                             s->now - p->t, skip_axis, skip_dir, &axis, &dir);
-  s->t_cell[i] = t > s->now ? t : s->now;
-  s->cell_axis[i] = (int8_t)axis;
-  s->cell_dir[i] = (int8_t)dir;
+  s->ev[i].t_cell = t > s->now ? t : s->now;
+  s->ev[i].axis = (int8_t)axis;
+  s->ev[i].dir = (int8_t)dir;
 }
 
 /* Next cell crossing; (skip_axis, skip_dir) is the face just entered through, if any. */
@@ -580,9 +580,9 @@ static void predict_cell(wg_ed *s, long i, int skip_axis, int skip_dir)
   double dt = wg_cells_exit_time(&s->cells, s->cells.cell[i], p->r, p->v, s->g, s->now - p->t,
                                  skip_axis, skip_dir, &axis, &dir);
   double t = p->t + dt;
-  s->t_cell[i] = t > s->now ? t : s->now;
-  s->cell_axis[i] = (int8_t)axis;
-  s->cell_dir[i] = (int8_t)dir;
+  s->ev[i].t_cell = t > s->now ? t : s->now;
+  s->ev[i].axis = (int8_t)axis;
+  s->ev[i].dir = (int8_t)dir;
 }
 
 /* Every event of particle i afresh: walls, all pairs in the surrounding cells, next cell. */
@@ -731,12 +731,12 @@ static void wall_collide(wg_ed *s, long i, int w)
 
 static void cell_crossing(wg_ed *s, long i)
 {
-  int axis = s->cell_axis[i], dir = s->cell_dir[i], wrapped;
+  int axis = s->ev[i].axis, dir = s->ev[i].dir, wrapped;
   long from = s->cells.cell[i];
   long to = wg_cells_step(&s->cells, from, axis, dir, &wrapped);
   s->counts.cell_crossings++;
   if (to < 0) { /* cannot happen: the outer cells have no outward face */
-    s->t_cell[i] = INFINITY;
+    s->ev[i].t_cell = INFINITY;
     schedule(s, i);
     return;
   }
@@ -744,24 +744,24 @@ static void cell_crossing(wg_ed *s, long i)
   wg_cells_remove(&s->cells, i);
   wg_cells_insert(&s->cells, i, to);
   /* only the particles in the newly adjacent cells can add an earlier event */
-  candidate best = {s->t_phys[i], s->ev_type[i], s->ev_partner[i]};
+  candidate best = {s->ev[i].t_phys, s->ev[i].type, s->ev[i].partner};
   long face[9];
   int m = wg_cells_face(&s->cells, to, axis, dir, face);
   predict_pairs_in(s, i, face, m, &best);
-  if (best.t < s->t_phys[i]) set_phys(s, i, &best);
+  if (best.t < s->ev[i].t_phys) set_phys(s, i, &best);
   predict_cell(s, i, axis, -dir);
   schedule(s, i);
 }
 
 static int physical_event(wg_ed *s, long i)
 {
-  long j = s->ev_partner[i];
-  int type = s->ev_type[i];
+  long j = s->ev[i].partner;
+  int type = s->ev[i].type;
   int st = WG_OK;
   switch (type) {
   case WG_EV_COLLISION:
   case WG_EV_BRIDGE_EDGE:
-    if (s->count[j] != s->ev_count[i]) { /* partner moved since: predict again */
+    if (s->ev[j].count != s->ev[i].partner_count) { /* partner moved since: predict again */
       s->counts.stale++;
       predict_all(s, i, 1);
       return WG_OK;
@@ -770,15 +770,15 @@ static int physical_event(wg_ed *s, long i)
     advance(s, j, s->now);
     if (type == WG_EV_COLLISION) st = collide(s, i, j);
     else bridge_edge(s, i, j);
-    s->count[i]++;
-    s->count[j]++;
+    s->ev[i].count++;
+    s->ev[j].count++;
     predict_all(s, i, 1);
     predict_all(s, j, 1);
     return st;
   case WG_EV_WALL_HIT:
     advance(s, i, s->now);
     wall_collide(s, i, (int)j);
-    s->count[i]++;
+    s->ev[i].count++;
     predict_all(s, i, 1);
     return WG_OK;
   case WG_EV_BIN:
@@ -786,7 +786,7 @@ static int physical_event(wg_ed *s, long i)
     advance(s, i, s->now);
     s->bin[i] = wg_shear_bin_step(s->shear, s->bin[i], (int)j);
     s->counts.bin_crossings++;
-    s->count[i]++;
+    s->ev[i].count++;
     predict_all(s, i, 1);
     return WG_OK;
   case WG_EV_WALL_ENTER:
@@ -834,7 +834,7 @@ static int advance_events(wg_ed *s, double t_stop)
 {
   for (;;) {
     long i = wg_evqueue_top(&s->queue);
-    double t = s->key[i];
+    double t = wg_evqueue_top_key(&s->queue);
     if (!(t <= t_stop)) break;
     /* a burst: events piling up within BURST_TIME of each other (same instant, or ulps
        apart as in a rigid cluster of bonded grains) */
@@ -849,7 +849,7 @@ static int advance_events(wg_ed *s, double t_stop)
       s->burst_start = t;
     }
     s->now = t;
-    if (s->t_cell[i] <= s->t_phys[i]) {
+    if (s->ev[i].t_cell <= s->ev[i].t_phys) {
       cell_crossing(s, i);
     } else {
       int st = physical_event(s, i);
@@ -962,7 +962,7 @@ int wg_ed_synchronize(wg_ed *s)
         s->p[i].r[k] = fmod(s->p[i].r[k], s->box[k]);
         if (s->p[i].r[k] < 0) s->p[i].r[k] += s->box[k];
       }
-    s->count[i] = 0;
+    s->ev[i].count = 0;
   }
   int st = renumber_by_cell(s);
   if (st != WG_OK) return st;
@@ -971,7 +971,7 @@ int wg_ed_synchronize(wg_ed *s)
     for (long i = 0; i < s->n; i++) s->bin[i] = wg_shear_bin_of(s->shear, s->p[i].r[0]);
   for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
   for (long i = 0; i < s->n; i++)
-    s->key[i] = s->t_phys[i] < s->t_cell[i] ? s->t_phys[i] : s->t_cell[i];
+    s->key[i] = s->ev[i].t_phys < s->ev[i].t_cell ? s->ev[i].t_phys : s->ev[i].t_cell;
   wg_evqueue_build(&s->queue);
   s->watch_at = s->watch_at > s->since_sync ? s->watch_at - s->since_sync : 0;
   s->since_sync = 0;
@@ -1047,14 +1047,7 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
   s->p = zalloc((size_t)n, sizeof *s->p, &fail);
   s->id = zalloc((size_t)n, sizeof *s->id, &fail);
   s->slot = zalloc((size_t)n, sizeof *s->slot, &fail);
-  s->count = zalloc((size_t)n, sizeof *s->count, &fail);
-  s->t_phys = zalloc((size_t)n, sizeof *s->t_phys, &fail);
-  s->ev_partner = zalloc((size_t)n, sizeof *s->ev_partner, &fail);
-  s->ev_count = zalloc((size_t)n, sizeof *s->ev_count, &fail);
-  s->ev_type = zalloc((size_t)n, sizeof *s->ev_type, &fail);
-  s->t_cell = zalloc((size_t)n, sizeof *s->t_cell, &fail);
-  s->cell_axis = zalloc((size_t)n, sizeof *s->cell_axis, &fail);
-  s->cell_dir = zalloc((size_t)n, sizeof *s->cell_dir, &fail);
+  s->ev = zalloc((size_t)n, sizeof *s->ev, &fail);
   s->key = zalloc((size_t)n, sizeof *s->key, &fail);
   if (sc->mass_scaling) s->mass = zalloc((size_t)n, sizeof *s->mass, &fail);
   if (s->inelastic) s->t_last = zalloc((size_t)n, sizeof *s->t_last, &fail);
@@ -1189,9 +1182,7 @@ int wg_ed_alloc_state(wg_ed *s, const wg_scene *sc, long n, const double *r, con
 size_t wg_ed_bytes(const wg_ed *s)
 {
   size_t n = (size_t)s->n;
-  size_t per = sizeof *s->p + sizeof *s->count + sizeof *s->t_phys + sizeof *s->ev_partner +
-               sizeof *s->ev_count + sizeof *s->ev_type + sizeof *s->t_cell + sizeof *s->cell_axis +
-               sizeof *s->cell_dir + sizeof *s->key + 3 * sizeof(int32_t) /* cell lists */ +
+  size_t per = sizeof *s->p + sizeof *s->ev + sizeof *s->key + 3 * sizeof(int32_t) /* cell lists */ +
                2 * sizeof(int32_t) /* id, slot */;
   size_t bytes = n * per + wg_evqueue_bytes(&s->queue) +
                  (size_t)s->cells.ncell * sizeof(int32_t);
@@ -1204,8 +1195,7 @@ size_t wg_ed_bytes(const wg_ed *s)
 
 void wg_ed_free(wg_ed *s)
 {
-  free(s->p); free(s->id); free(s->slot); free(s->count); free(s->t_phys); free(s->ev_partner); free(s->ev_count);
-  free(s->ev_type); free(s->t_cell); free(s->cell_axis); free(s->cell_dir); free(s->key);
+  free(s->p); free(s->id); free(s->slot); free(s->ev); free(s->key);
   free(s->mass); free(s->t_last); free(s->bond); free(s->nbond); free(s->bin);
   if (s->shear) wg_shear_free(s->shear);
   free(s->shear);

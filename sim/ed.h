@@ -21,6 +21,18 @@ typedef struct wg_particle {
   double radius;   /* [d] */
 } wg_particle;
 
+/* A particle's next events and the counter that validates them: what an event reads and
+   writes of a particle besides its trajectory, in one 32-byte record (half a cache line). */
+typedef struct wg_evrec {
+  double t_phys;           /* earliest physical event */
+  double t_cell;           /* next cell crossing */
+  int32_t partner;         /* partner particle, or wall index, or bin step */
+  uint32_t partner_count;  /* the partner's count when the event was predicted */
+  uint32_t count;          /* this particle's trajectory changes (validates others' predictions) */
+  uint8_t type;            /* wg_event_type of t_phys */
+  int8_t axis, dir;        /* face of the cell crossing */
+} wg_evrec;
+
 typedef enum {
   WG_EV_NONE = 0,
   WG_EV_COLLISION,     /* hard-core contact of a pair */
@@ -81,19 +93,13 @@ typedef struct wg_ed {
   wg_particle *p;
   int32_t *id, *slot;
   double *mass;                /* NULL: every mass is 1 */
-  uint32_t *count;             /* trajectory changes of each particle (validates predictions) */
+
   double *t_last;              /* time of the last collision (TC model); NULL when elastic */
   int32_t *bond;               /* bond[i * bond_cap + k]: partners of i; NULL when dry */
   uint8_t *nbond;
 
-  /* next events */
-  double *t_phys;              /* earliest physical event of each particle */
-  int32_t *ev_partner;         /* partner particle, or wall index */
-  uint32_t *ev_count;          /* partner's count at prediction time */
-  uint8_t *ev_type;
-  double *t_cell;              /* next cell crossing */
-  int8_t *cell_axis, *cell_dir;
-  double *key;                 /* min(t_phys, t_cell): what the queue orders */
+  wg_evrec *ev;                /* next events of each particle, one record each */
+  double *key;                 /* min(t_phys, t_cell): what the queue orders (its leaves) */
 
   wg_cells cells;
   wg_evqueue queue;

@@ -32,8 +32,9 @@ void wg_evqueue_free(wg_evqueue *q);
 void wg_evqueue_build(wg_evqueue *q);
 /* Particle i's key changed. */
 void wg_evqueue_update(wg_evqueue *q, long i);
-/* Particle with the earliest key. */
+/* Particle with the earliest key, and that key (kept at the root: no visit to key[]). */
 static inline long wg_evqueue_top(const wg_evqueue *q) { return q->level[q->levels - 1][0].idx; }
+static inline double wg_evqueue_top_key(const wg_evqueue *q) { return q->level[q->levels - 1][0].key; }
 /* Bytes held by the queue. */
 size_t wg_evqueue_bytes(const wg_evqueue *q);
 

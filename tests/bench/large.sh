@@ -2,8 +2,8 @@
 # large.sh TOOL_BIN_DIR: `make bench-large` (not in CI).  Free cooling of 2.5 10^6 wet spheres in
 # a periodic cube of edge 600 d (thesis Fig. 2.6; sim/scenes/cool3d_wet.ini): events/s, cell
 # crossings/s, peak memory and wall time of the whole run, T_g and the bridge count against
-# time, and the cluster picture (a slab 20 d thick through the final state).
-# T_END=... shortens or lengthens the run (default: the scene's 200 time units).
+# time, and the cluster picture (a slab 20 d thick through the final state).  About 15 min.
+# T_END=... shortens or lengthens the run (default: the scene's 40 time units).
 set -euo pipefail
 bindir=$(cd "${1:?usage: large.sh TOOL_BIN_DIR}" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
