@@ -9,6 +9,7 @@
 #   edmd n=... phi=... collisions=... wall_s=... collisions_per_s=... peak_rss_kb=...
 # The wall time is the whole run, set-up included, as wetgran's wall_s.
 set -eu
+case ${1:-} in --help|-h) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
 src=${1:?} build=${2:?} n=${3:?} phi=${4:?} t_end=${5:?}
 flags=${EDMD_CFLAGS:--Ofast -funroll-loops -march=native}
 for f in mdSingle.c mdSingle.h mt19937ar.c; do

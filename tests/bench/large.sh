@@ -2,9 +2,10 @@
 # large.sh TOOL_BIN_DIR: `make bench-large` (not in CI).  Free cooling of 2.5 10^6 wet spheres in
 # a periodic cube of edge 600 d (thesis Fig. 2.6; sim/scenes/cool3d_wet.ini): events/s, cell
 # crossings/s, peak memory and wall time of the whole run, T_g and the bridge count against
-# time, and the cluster picture (a slab 20 d thick through the final state).  About 15 min.
+# time, and the cluster picture (a slab 20 d thick through the final state).  About 17 min, 0.75 GB.
 # T_END=... shortens or lengthens the run (default: the scene's 40 time units).
 set -euo pipefail
+case ${1:-} in --help|-h) sed -n '2,6p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
 bindir=$(cd "${1:?usage: large.sh TOOL_BIN_DIR}" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
 out=$here/out

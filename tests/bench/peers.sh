@@ -16,6 +16,7 @@
 # Rates count collisions (wetgran: every event but cell crossings) per second of wall time,
 # set-up included for both codes; runs are long enough for set-up to be a few per cent.
 set -euo pipefail
+case ${1:-} in --help|-h) sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
 bindir=$(cd "${1:?usage: peers.sh TOOL_BIN_DIR}" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
 top=$(cd "$here/../.." && pwd)
