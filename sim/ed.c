@@ -262,7 +262,7 @@ typedef struct probe {
   long i;
   double r[3], v[3], radius;
   double now, g, box[3], half[3];
-  int periodic[3], up, wet;
+  int periodic[3];
   int bonds;       /* bridges of particle i (wet runs) */
 } probe;
 
@@ -274,8 +274,6 @@ static inline void probe_at_now(const wg_ed *s, long i, probe *pr)
   pr->radius = a->radius;
   pr->now = s->now;
   pr->g = s->g;
-  pr->up = s->up;
-  pr->wet = s->wet;
   pr->bonds = s->wet ? s->nbond[i] : 0;
   for (int k = 0; k < 3; k++) {
     pr->r[k] = a->r[k] + a->v[k] * dt;
@@ -398,7 +396,6 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
 static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int ncells,
                                   candidate *best) __attribute__((cold, noinline));
 
-/* Every pair of particle i with the particles of the given cells. */
 /* The loop over the neighbours, specialised for each (dim, wet). */
 #define PAIRS_IN(DIM, WET)                                                                   \
   do {                                                                                       \
@@ -407,6 +404,7 @@ static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int
         if (j != i) predict_pair(s, &pr, j, best, DIM, WET);                                \
   } while (0)
 
+/* Every pair of particle i with the particles of the given cells. */
 static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncells,
                              candidate *best)
 {
@@ -538,9 +536,15 @@ static void predict_walls(wg_ed *s, long i, candidate *best)
   }
 }
 
+/* The queue's key of a particle: its next event of either kind. */
+static inline double next_event_time(const wg_evrec *e)
+{
+  return e->t_phys < e->t_cell ? e->t_phys : e->t_cell;
+}
+
 static void schedule(wg_ed *s, long i)
 {
-  s->key[i] = s->ev[i].t_phys < s->ev[i].t_cell ? s->ev[i].t_phys : s->ev[i].t_cell;
+  s->key[i] = next_event_time(&s->ev[i]);
   wg_evqueue_update(&s->queue, i);
 }
 
@@ -971,7 +975,7 @@ int wg_ed_synchronize(wg_ed *s)
     for (long i = 0; i < s->n; i++) s->bin[i] = wg_shear_bin_of(s->shear, s->p[i].r[0]);
   for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
   for (long i = 0; i < s->n; i++)
-    s->key[i] = s->ev[i].t_phys < s->ev[i].t_cell ? s->ev[i].t_phys : s->ev[i].t_cell;
+    s->key[i] = next_event_time(&s->ev[i]);
   wg_evqueue_build(&s->queue);
   s->watch_at = s->watch_at > s->since_sync ? s->watch_at - s->since_sync : 0;
   s->since_sync = 0;

@@ -93,13 +93,13 @@ typedef struct wg_ed {
   wg_particle *p;
   int32_t *id, *slot;
   double *mass;                /* NULL: every mass is 1 */
-
   double *t_last;              /* time of the last collision (TC model); NULL when elastic */
   int32_t *bond;               /* bond[i * bond_cap + k]: partners of i; NULL when dry */
   uint8_t *nbond;
 
   wg_evrec *ev;                /* next events of each particle, one record each */
-  double *key;                 /* min(t_phys, t_cell): what the queue orders (its leaves) */
+  double *key;                 /* min(t_phys, t_cell) of ev[]: the queue's leaves, kept apart so
+                                  that a group of 8 is one cache line */
 
   wg_cells cells;
   wg_evqueue queue;
