@@ -100,6 +100,13 @@ static inline void unflat(const wg_cells *c, long cell, int *ix)
   ix[2] = (int)(cell / c->nc[1]);
 }
 
+int wg_cells_coord(const wg_cells *c, long cell, int axis)
+{
+  int ix[3];
+  unflat(c, cell, ix);
+  return ix[axis];
+}
+
 long wg_cells_locate(const wg_cells *c, const double *r)
 {
   int ix[3] = {0, 0, 0};

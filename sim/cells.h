@@ -33,6 +33,9 @@ void wg_cells_free(wg_cells *c);
 long wg_cells_locate(const wg_cells *c, const double *r);
 void wg_cells_insert(wg_cells *c, long i, long cell);
 void wg_cells_remove(wg_cells *c, long i);
+/* Index of `cell` along one axis (0 .. nc[axis] - 1). */
+int wg_cells_coord(const wg_cells *c, long cell, int axis);
+
 /* Empty all cells and insert particles 0..n-1 at their positions (deterministic order). */
 void wg_cells_rebuild(wg_cells *c, long n, const double *r, size_t stride);
 

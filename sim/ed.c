@@ -30,6 +30,8 @@ enum { BOND_CAP_2D = 8, BOND_CAP_3D = 16 };
    normal speed taken from the tangential motion (energy and momentum are kept).  A rigid
    cluster spinning on a taut bridge so sheds its spin within ~1/angle^2 reflections; the
    normal energy handed over can rupture a bridge only if 1/2 mu u^2 > E_cb / angle^2. */
+/* A floor contact rests only where the floor's acceleration exceeds -g (1 - LIFT_MARGIN). */
+#define LIFT_MARGIN 1e-9
 /* Without the TC model, the time scale of wall_min_speed [sqrt(d/g)]. */
 #define WALL_MIN_TIME 1e-12
 /* Most cells per particle of a periodic box (setup_cells). */
@@ -75,6 +77,11 @@ static inline double reduced_mass(const wg_ed *s, long i, long j)
 
 static void advance_sheared(wg_ed *s, long i, double t) __attribute__((cold, noinline));
 
+/* Resting contacts likewise: RESTING is false unless the scene sets rest_speed. */
+#define RESTING(s) __builtin_expect((s)->riding != NULL, 0)
+static inline int rides(const wg_ed *s, long i) { return RESTING(s) && s->riding[i]; }
+static void advance_rider(wg_ed *s, long i, double t) __attribute__((cold, noinline));
+
 /* Move particle i along its trajectory to time t. */
 static void advance(wg_ed *s, long i, double t)
 {
@@ -83,6 +90,10 @@ static void advance(wg_ed *s, long i, double t)
   if (dt == 0) return;
   if (SHEARED(s)) {
     advance_sheared(s, i, t);
+    return;
+  }
+  if (rides(s, i)) {
+    advance_rider(s, i, t);
     return;
   }
   for (int k = 0; k < s->dim; k++) p->r[k] += p->v[k] * dt;
@@ -127,16 +138,31 @@ static double field_work_to(const wg_ed *s, long i, double t)
   return s->shear->force[s->bin[i]] * (p->v[a] * dt + 0.5 * acc[a] * dt * dt);
 }
 
-static void advance_sheared(wg_ed *s, long i, double t)
+/* Particle i's trajectory from a new reference point (r, v) at time t. */
+static void set_reference(wg_ed *s, long i, double t, const double *r, const double *v)
 {
-  ksum_add(&s->ledger.injected_field, field_work_to(s, i, t));
-  double r[3], v[3];
-  flight_at(s, i, t, r, v);
   for (int k = 0; k < s->dim; k++) {
     s->p[i].r[k] = r[k];
     s->p[i].v[k] = v[k];
   }
   s->p[i].t = t;
+}
+
+typedef void path_fn(const wg_ed *s, long i, double t, double *r, double *v);
+
+/* Move particle i to time t along a path other than the free parabola (the shear field's, the
+   floor's), booking the work `work` done on it meanwhile into `account`. */
+static void advance_on(wg_ed *s, long i, double t, path_fn *path, wg_ksum *account, double work)
+{
+  ksum_add(account, work);
+  double r[3], v[3];
+  path(s, i, t, r, v);
+  set_reference(s, i, t, r, v);
+}
+
+static void advance_sheared(wg_ed *s, long i, double t)
+{
+  advance_on(s, i, t, flight_at, &s->ledger.injected_field, field_work_to(s, i, t));
 }
 
 double wg_ed_field_work(const wg_ed *s)
@@ -148,10 +174,58 @@ double wg_ed_field_work(const wg_ed *s)
   return w;
 }
 
+/* ---------- resting on the floor ---------- */
+
+/* A resting particle rides the floor: its height is the floor's plus its radius, its vertical
+   velocity the floor's, while it moves freely (without friction) along the floor. */
+static void rider_at(const wg_ed *s, long i, double t, double *r, double *v)
+{
+  const wg_particle *p = &s->p[i];
+  double dt = t - p->t;
+  for (int k = 0; k < 3; k++) {
+    r[k] = k < s->dim ? p->r[k] + p->v[k] * dt : 0;
+    v[k] = k < s->dim ? p->v[k] : 0;
+  }
+  r[s->up] = wg_wall_position(&s->wall[0], t) + p->radius;
+  v[s->up] = wg_wall_velocity(&s->wall[0], t);
+}
+
+/* Work of the floor on a resting particle from its local time to t: the change of its
+   vertical kinetic and potential energy (the floor's force m (a_w + g) times its velocity). */
+static double rider_work_to(const wg_ed *s, long i, double t)
+{
+  const wg_wall *w = &s->wall[0];
+  double v0 = wg_wall_velocity(w, s->p[i].t), v1 = wg_wall_velocity(w, t);
+  double z0 = wg_wall_position(w, s->p[i].t), z1 = wg_wall_position(w, t);
+  return wg_ed_mass(s, i) * (0.5 * (v1 * v1 - v0 * v0) + s->g * (z1 - z0));
+}
+
+static void advance_rider(wg_ed *s, long i, double t)
+{
+  advance_on(s, i, t, rider_at, &s->ledger.injected_wall, rider_work_to(s, i, t));
+}
+
+double wg_ed_wall_work(const wg_ed *s)
+{
+  double w = wg_ksum_value(&s->ledger.injected_wall);
+  if (RESTING(s))
+    for (long i = 0; i < s->n; i++)
+      if (s->riding[i]) w += rider_work_to(s, i, s->now);
+  return w;
+}
+
 void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v)
 {
   const wg_particle *p = &s->p[i];
   double dt = t - p->t;
+  if (rides(s, i)) {
+    rider_at(s, i, t, r, v);
+    for (int k = 0; k < s->dim - 1; k++) {
+      r[k] = fmod(r[k], s->box[k]);
+      if (r[k] < 0) r[k] += s->box[k];
+    }
+    return;
+  }
   if (SHEARED(s)) {
     flight_at(s, i, t, r, v);
     for (int k = 0; k < s->dim; k++)
@@ -339,6 +413,10 @@ static inline double keep_or_inf(int ok, double t)
    toss, the contact root is computed for every pair and kept or dropped without a branch
    (every operation is the one of the plain formula, in the same order). */
 static inline __attribute__((always_inline)) void
+pair_events(const wg_ed *s, const probe *pr, long j, double radius_j, double x, double y,
+            double z, double u, double v, double w, candidate *best, const int dim, const int wet);
+
+static inline __attribute__((always_inline)) void
 predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim,
              const int wet)
 {
@@ -363,6 +441,15 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
   if (pr->periodic[0]) x = min_image(x, pr->half[0], pr->box[0]);
   if (pr->periodic[1]) y = min_image(y, pr->half[1], pr->box[1]);
   if (dim == 3 && pr->periodic[2]) z = min_image(z, pr->half[2], pr->box[2]);
+  pair_events(s, pr, j, b->radius, x, y, z, u, v, w, best, dim, wet);
+}
+
+/* The events of the pair (probe, j) from their separation (x, y, z) and relative velocity
+   (u, v, w) at now, in free flight relative to each other. */
+static inline __attribute__((always_inline)) void
+pair_events(const wg_ed *s, const probe *pr, long j, double radius_j, double x, double y,
+            double z, double u, double v, double w, candidate *best, const int dim, const int wet)
+{
   double bdot = x * u + y * v;
   double r2 = x * x + y * y, a = u * u + v * v;
   if (dim == 3) {
@@ -370,7 +457,7 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
     r2 += z * z;
     a += w * w;
   }
-  double sigma = pr->radius + b->radius;
+  double sigma = pr->radius + radius_j;
   double c = r2 - sigma * sigma;
   if (__builtin_expect(c <= 0, 0)) { /* overlap */
     if (bdot < 0) {
@@ -395,6 +482,8 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
 
 static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int ncells,
                                   candidate *best) __attribute__((cold, noinline));
+static void predict_pairs_resting(const wg_ed *s, long i, const long *cells, int ncells,
+                                  candidate *best) __attribute__((cold, noinline));
 
 /* The loop over the neighbours, specialised for each (dim, wet). */
 #define PAIRS_IN(DIM, WET)                                                                   \
@@ -410,6 +499,10 @@ static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncel
 {
   if (SHEARED(s)) {
     predict_pairs_sheared(s, i, cells, ncells, best);
+    return;
+  }
+  if (RESTING(s)) {
+    predict_pairs_resting(s, i, cells, ncells, best);
     return;
   }
   probe pr;
@@ -509,6 +602,181 @@ static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int
       if (j != i) predict_pair_sheared(s, i, ri, vi, ai, j, best);
 }
 
+/* ---------- pairs with a particle resting on the floor ---------- */
+
+/* A resting particle q and a free one f: along the floor their separation is linear in time,
+   across it dz(tau) is the free parabola less the floor's sine.  |dr|^2 - L^2 has no closed-form
+   root, so it is searched by conservative advancement: from a point where it is positive, step
+   as far as a lower bound -- its tangent line less M/2 times the step squared, M a bound on its
+   second derivative over the step -- stays positive.  Steps shrink like Newton's towards a
+   crossing and never pass one. */
+typedef struct rest_pair {
+  const wg_wall *floor;
+  double now, g;
+  double G2;             /* bound on |dz''| = |-g + A w^2 sin|: g + A w^2 */
+  double dh[3], dvh[3];  /* separation and relative velocity along the floor (vertical part 0) */
+  double dvh2;           /* |dvh|^2 */
+  double zf, vf, rq;     /* the free particle's height and vertical velocity at now; q's radius */
+} rest_pair;
+
+/* f = |dr|^2 - L2, f' and dz, dz' at tau. */
+static void rest_pair_at(const rest_pair *q, double tau, double L2, double *f, double *fp,
+                         double *dz, double *dzp)
+{
+  double h = 0, hp = 0;
+  for (int k = 0; k < 3; k++) {
+    double x = q->dh[k] + q->dvh[k] * tau;
+    h += x * x;
+    hp += x * q->dvh[k];
+  }
+  double t = q->now + tau;
+  *dz = q->zf + tau * (q->vf - 0.5 * q->g * tau) - (wg_wall_position(q->floor, t) + q->rq);
+  *dzp = q->vf - q->g * tau - wg_wall_velocity(q->floor, t);
+  *f = h + *dz * *dz - L2;
+  *fp = 2 * (hp + *dz * *dzp);
+}
+
+enum { REST_ROOT_STEPS = 200 };
+
+/* First tau in [0, T] at which F = sgn (|dr|^2 - L^2) falls through 0 while falling (sgn = +1:
+   contact from outside; -1: the bridge's edge from inside).  Returns 1 and *tau; 0 if there is
+   none before T; -1 if the steps ran out (*tau: how far the pair is known to be clear). */
+static int rest_pair_root(const rest_pair *q, double L, int sgn, double T, double *tau_out)
+{
+  double L2 = L * L, tol = 1e-12 * L2, tau = 0, guess = T;
+  for (int it = 0; it < REST_ROOT_STEPS; it++) {
+    double f, fp, dz, dzp;
+    rest_pair_at(q, tau, L2, &f, &fp, &dz, &dzp);
+    double F = sgn * f, Fp = sgn * fp;
+    if (F <= tol && Fp < -2 * REST_SPEED * L) { /* closing faster than rest (predict_pair) */
+      *tau_out = tau;
+      return 1;
+    }
+    if (tau >= T) return 0;
+    double step = fmin(guess, T - tau);
+    double Z1 = fabs(dzp) + q->G2 * step;                         /* >= |dz'| on the step */
+    double Z0 = fabs(dz) + (fabs(dzp) + 0.5 * q->G2 * step) * step; /* >= |dz| */
+    double M = 2 * (q->dvh2 + Z1 * Z1 + Z0 * q->G2);               /* >= |f''| */
+    double Fa = F > 0 ? F : 0;
+    double x = (Fp + sqrt(Fp * Fp + 2 * M * Fa)) / M; /* F + F' x - M x^2 / 2 = 0 */
+    if (x < step) step = x; /* M shrinks with the step: x stays safe */
+    /* touching at rest: on by as much as the pair needs to close faster than REST_SPEED */
+    step = fmax(step, F <= tol ? 2 * REST_SPEED * L / M : 1e-14 * (1 + tau));
+    tau = fmin(tau + step, T);
+    guess = 4 * step;
+  }
+  *tau_out = tau;
+  return -1;
+}
+
+/* The free particle's state at now. */
+static void free_at_now(const wg_ed *s, long i, double *r, double *v)
+{
+  probe pr;
+  probe_at_now(s, i, &pr);
+  memcpy(r, pr.r, sizeof pr.r);
+  memcpy(v, pr.v, sizeof pr.v);
+}
+
+/* Events of the pair (i, j), exactly one of which rests on the floor; the overlap and edge
+   rules are those of predict_pair. */
+static void predict_rest_pair(const wg_ed *s, long i, long j, candidate *best)
+{
+  long q = s->riding[i] ? i : j, f = q == i ? j : i;
+  const wg_wall *floor = &s->wall[0];
+  double rq[3], vq[3], rf[3], vf[3];
+  rider_at(s, q, s->now, rq, vq);
+  free_at_now(s, f, rf, vf);
+  int up = s->up;
+  rest_pair P = {floor, s->now, s->g, s->g + floor->A * floor->omega * floor->omega,
+                 {0, 0, 0}, {0, 0, 0}, 0, rf[up], vf[up], s->p[q].radius};
+  for (int k = 0; k < up; k++) {
+    P.dh[k] = min_image(rf[k] - rq[k], 0.5 * s->box[k], s->box[k]);
+    P.dvh[k] = vf[k] - vq[k];
+    P.dvh2 += P.dvh[k] * P.dvh[k];
+  }
+  double dz = rf[up] - rq[up], dzv = vf[up] - vq[up];
+  double r2 = dz * dz, bdot = dz * dzv;
+  for (int k = 0; k < up; k++) {
+    r2 += P.dh[k] * P.dh[k];
+    bdot += P.dh[k] * P.dvh[k];
+  }
+  double sigma = s->p[q].radius + s->p[f].radius;
+  int bonded = s->wet && wg_ed_bonded(s, i, j);
+  /* Only events before the best so far, before q lifts off and before f falls below the
+     floor's lowest point (it meets the floor first) matter. */
+  double drop = rf[up] - (floor->c - floor->A + s->p[f].radius);
+  double t_floor = (vf[up] + sqrt(fmax(vf[up] * vf[up] + 2 * s->g * drop, 0))) / s->g;
+  double T = fmin(fmin(best->t, wg_wall_lift_off_time(floor, s->g, s->now)) - s->now, t_floor);
+  if (!(T > 0)) T = 0;
+  double tau;
+  int found;
+  if (r2 - sigma * sigma <= 0 && bdot < 0) { /* overlap, closing */
+    if (bdot < -REST_SPEED * sigma) consider(best, s->now, WG_EV_COLLISION, j);
+    return;
+  }
+  { /* unlike two free grains, a separating pair may come back (the floor accelerates q);
+       along the floor alone it must come within sigma */
+    double hd = 0;
+    for (int k = 0; k < up; k++) hd += P.dh[k] * P.dvh[k];
+    double tmin = P.dvh2 > 0 ? fmin(fmax(-hd / P.dvh2, 0), T) : 0;
+    double hmin = 0;
+    for (int k = 0; k < up; k++) {
+      double x = P.dh[k] + P.dvh[k] * tmin;
+      hmin += x * x;
+    }
+    if (hmin < sigma * sigma) {
+      found = rest_pair_root(&P, sigma, +1, T, &tau);
+      if (found == 1) consider(best, s->now + tau, WG_EV_COLLISION, j);
+      else if (found < 0) consider(best, s->now + tau, WG_EV_WALL_ENTER, 0); /* look again then */
+    }
+  }
+  if (!bonded) return;
+  double edge = sigma + s->s_crit;
+  if (r2 - edge * edge >= 0 && bdot > REST_SPEED * edge) {
+    consider(best, s->now, WG_EV_BRIDGE_EDGE, j);
+    return;
+  }
+  T = fmin(T, best->t - s->now);
+  found = rest_pair_root(&P, edge, -1, T, &tau);
+  if (found == 1) consider(best, s->now + tau, WG_EV_BRIDGE_EDGE, j);
+  else if (found < 0) consider(best, s->now + tau, WG_EV_WALL_ENTER, 0);
+}
+
+/* Both resting: the height difference is constant (the difference of the radii) and the
+   relative motion is linear, as between two free particles. */
+static void predict_riders_pair(const wg_ed *s, const probe *pr, long j, candidate *best)
+{
+  double rj[3], vj[3], d[3] = {0, 0, 0}, dv[3] = {0, 0, 0};
+  rider_at(s, j, s->now, rj, vj);
+  for (int k = 0; k < s->up; k++) {
+    d[k] = min_image(rj[k] - pr->r[k], pr->half[k], pr->box[k]);
+    dv[k] = vj[k] - pr->v[k];
+  }
+  d[s->up] = s->p[j].radius - pr->radius;
+  pair_events(s, pr, j, s->p[j].radius, d[0], d[1], d[2], dv[0], dv[1], dv[2], best, s->dim,
+              s->wet);
+}
+
+/* Every pair of particle i with the given cells when some particles may rest on the floor. */
+static void predict_pairs_resting(const wg_ed *s, long i, const long *cells, int ncells,
+                                  candidate *best)
+{
+  probe pr;
+  probe_at_now(s, i, &pr);
+  int qi = s->riding[i];
+  if (qi) rider_at(s, i, s->now, pr.r, pr.v);
+  const int32_t *head = s->cells.head, *next = s->cells.next;
+  for (int k = 0; k < ncells; k++)
+    for (int32_t j = head[cells[k]]; j >= 0; j = next[j]) {
+      if (j == i) continue;
+      int qj = s->riding[j];
+      if (!qi && !qj) predict_pair(s, &pr, j, best, s->dim, s->wet);
+      else if (qi && qj) predict_riders_pair(s, &pr, j, best);
+      else predict_rest_pair(s, i, j, best);
+    }
+}
+
 /* The next bin crossing (x moves linearly: the field has no x component). */
 static __attribute__((cold, noinline)) void predict_bin(const wg_ed *s, long i, candidate *best)
 {
@@ -572,6 +840,40 @@ static __attribute__((cold, noinline)) void predict_cell_sheared(wg_ed *s, long 
   s->ev[i].dir = (int8_t)dir;
 }
 
+/* The next cell crossing of a particle resting on the floor: along the floor in a straight
+   line, up and down with the floor (upwards only while it rises, downwards only while it
+   falls, so the face just crossed is not crossed again at once). */
+static __attribute__((cold, noinline)) void predict_cell_rider(wg_ed *s, long i, int skip_axis,
+                                                               int skip_dir)
+{
+  const wg_particle *p = &s->p[i];
+  const wg_cells *c = &s->cells;
+  int up = s->up, axis, dir;
+  double v[3] = {p->v[0], p->v[1], p->v[2]};
+  v[up] = 0;
+  double t = p->t + wg_cells_exit_time(c, c->cell[i], p->r, v, 0.0, s->now - p->t,
+                                       skip_axis == up ? -1 : skip_axis, skip_dir, &axis, &dir);
+  int iz = wg_cells_coord(c, c->cell[i], up);
+  /* the floor's heights at which the particle reaches the cell's faces */
+  double lower = c->lo[up] + iz * c->w[up] - p->radius;
+  double upper = c->lo[up] + (iz + 1) * c->w[up] - p->radius; /* = the next cell's lower */
+  double z = wg_wall_position(&s->wall[0], s->now);
+  /* already beyond a face (the particle came to rest there): through it now -- but not back
+     through the face just entered, which round-off may place a hair on the wrong side */
+  int entered_up = skip_axis == up && skip_dir == -1, entered_down = skip_axis == up && skip_dir == 1;
+  if (iz < c->nc[up] - 1) {
+    double tu = z > upper && !entered_down ? s->now : wg_wall_level_time(&s->wall[0], s->now, upper, 1);
+    if (tu < t) { t = tu; axis = up; dir = 1; }
+  }
+  if (iz > 0) {
+    double td = z < lower && !entered_up ? s->now : wg_wall_level_time(&s->wall[0], s->now, lower, 0);
+    if (td < t) { t = td; axis = up; dir = -1; }
+  }
+  s->ev[i].t_cell = t > s->now ? t : s->now;
+  s->ev[i].axis = (int8_t)axis;
+  s->ev[i].dir = (int8_t)dir;
+}
+
 /* Next cell crossing; (skip_axis, skip_dir) is the face just entered through, if any. */
 static void predict_cell(wg_ed *s, long i, int skip_axis, int skip_dir)
 {
@@ -579,6 +881,10 @@ static void predict_cell(wg_ed *s, long i, int skip_axis, int skip_dir)
   int axis, dir;
   if (SHEARED(s)) {
     predict_cell_sheared(s, i, skip_axis, skip_dir);
+    return;
+  }
+  if (rides(s, i)) {
+    predict_cell_rider(s, i, skip_axis, skip_dir);
     return;
   }
   double dt = wg_cells_exit_time(&s->cells, s->cells.cell[i], p->r, p->v, s->g, s->now - p->t,
@@ -594,7 +900,10 @@ static void predict_all(wg_ed *s, long i, int reschedule)
 {
   candidate best = {INFINITY, WG_EV_NONE, -1};
   long stencil[27];
-  if (s->nwalls) predict_walls(s, i, &best);
+  if (rides(s, i))
+    consider(&best, wg_wall_lift_off_time(&s->wall[0], s->g, s->now), WG_EV_LIFT_OFF, 0);
+  else if (s->nwalls)
+    predict_walls(s, i, &best);
   if (SHEARED(s)) predict_bin(s, i, &best);
   int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
   predict_pairs_in(s, i, stencil, m, &best);
@@ -616,15 +925,52 @@ static double contact_normal(const wg_ed *s, long i, long j, double *n, double *
   return dot(dv, n, s->dim);
 }
 
+/* The pair's reduced mass along n.  The floor holds a resting particle's vertical motion, so
+   along n it has inverse mass (1 - n_z^2) / m (infinite mass across the floor). */
+static double pair_mass(const wg_ed *s, long i, long j, const double *n)
+{
+  if (!RESTING(s) || !(s->riding[i] | s->riding[j])) return reduced_mass(s, i, j);
+  double nz2 = n[s->up] * n[s->up];
+  double wi = (s->riding[i] ? 1 - nz2 : 1) / wg_ed_mass(s, i);
+  double wj = (s->riding[j] ? 1 - nz2 : 1) / wg_ed_mass(s, j);
+  return 1 / (wi + wj);
+}
+
+/* An impulse changing the normal relative velocity by du along n (push = +1: i along -n and j
+   along +n, as a contact; -1: the reverse, as a bridge) lifts off a resting particle it would
+   throw up from the floor faster than rest_speed.  A smaller upward kick is taken by the floor:
+   the particle would land again at once, slower than rest_speed, and rest. */
+static void hold_or_lift(wg_ed *s, long i, long j, const double *n, int push, double du)
+{
+  double a = push * n[s->up] * reduced_mass(s, i, j) * fabs(du);
+  if (s->riding[i] && -a > s->rest_speed * wg_ed_mass(s, i))
+    s->riding[i] = 0, s->counts.lift_offs++;
+  if (s->riding[j] && a > s->rest_speed * wg_ed_mass(s, j))
+    s->riding[j] = 0, s->counts.lift_offs++;
+}
+
 /* Change the normal relative velocity by du, conserving momentum:
-   dv_i = -mu/m_i du n, dv_j = +mu/m_j du n. */
+   dv_i = -mu/m_i du n, dv_j = +mu/m_j du n.  For a resting particle the floor takes the
+   vertical part, and its work (impulse times the floor's velocity) goes to the ledger. */
 static void normal_kick(wg_ed *s, long i, long j, const double *n, double du)
 {
-  double mu = reduced_mass(s, i, j);
+  double mu = pair_mass(s, i, j, n);
   double ki = mu * du / wg_ed_mass(s, i), kj = mu * du / wg_ed_mass(s, j);
+  double vi = s->p[i].v[s->up], vj = s->p[j].v[s->up];
   for (int k = 0; k < s->dim; k++) {
     s->p[i].v[k] -= ki * n[k];
     s->p[j].v[k] += kj * n[k];
+  }
+  if (RESTING(s)) {
+    double vw = wg_wall_velocity(&s->wall[0], s->now);
+    if (s->riding[i]) {
+      s->p[i].v[s->up] = vi;
+      ksum_add(&s->ledger.injected_wall, wg_ed_mass(s, i) * ki * n[s->up] * vw);
+    }
+    if (s->riding[j]) {
+      s->p[j].v[s->up] = vj;
+      ksum_add(&s->ledger.injected_wall, -wg_ed_mass(s, j) * kj * n[s->up] * vw);
+    }
   }
 }
 
@@ -640,7 +986,7 @@ static int collide(wg_ed *s, long i, long j)
   double e = s->eps;
   if (s->t_last) {
     double since = fmin(s->now - s->t_last[i], s->now - s->t_last[j]);
-    if (since <= RIGID_TIME) {
+    if (since <= RIGID_TIME && !(rides(s, i) && rides(s, j))) {
       e = 0;
       s->counts.rigid++;
     } else if (since < s->tc) {
@@ -648,10 +994,18 @@ static int collide(wg_ed *s, long i, long j)
     }
     s->t_last[i] = s->t_last[j] = s->now;
   }
-  double mu = reduced_mass(s, i, j);
+  if (RESTING(s)) hold_or_lift(s, i, j, n, +1, (1 + e) * un);
+  double mu = pair_mass(s, i, j, n);
   normal_kick(s, i, j, n, -(1 + e) * un);
   s->virial -= dist * (1 + e) * mu * un; /* sigma |J| */
   if (e < 1) ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
+  if (RESTING(s) && (s->riding[i] ^ s->riding[j]) && -e * un < s->wall_min_speed) {
+    /* a free particle pressed onto a resting one by the floor's acceleration would bounce
+       ever more often, as on the floor itself: it leaves at no less than wall_min_speed */
+    double w = s->wall_min_speed;
+    normal_kick(s, i, j, n, w + e * un);
+    ksum_add(&s->ledger.injected_wall, 0.5 * mu * (w * w - e * e * un * un));
+  }
   s->counts.collisions++;
   if (s->wet && !wg_ed_bonded(s, i, j)) {
     int st = bond_add_one(s, i, j);
@@ -670,7 +1024,8 @@ static void bridge_edge(wg_ed *s, long i, long j)
   double n[3], dist;
   double un = contact_normal(s, i, j, n, &dist);
   if (un <= 0) return;
-  double mu = reduced_mass(s, i, j);
+  if (RESTING(s)) hold_or_lift(s, i, j, n, -1, 2 * un);
+  double mu = pair_mass(s, i, j, n);
   if (0.5 * mu * un * un > s->e_cb) {
     bond_remove_one(s, i, j);
     bond_remove_one(s, j, i);
@@ -683,7 +1038,8 @@ static void bridge_edge(wg_ed *s, long i, long j)
   double dr[3], du[3] = {0, 0, 0};
   pair_state(s, i, j, dr, du);
   double u2 = dot(du, du, s->dim), u_min = s->grazing_angle * sqrt(u2);
-  if (un >= u_min * (1 - 1e-9)) { /* (a pair that grazed before comes back at u_min) */
+  /* (a pair that grazed before comes back at u_min; a resting particle reflects plainly) */
+  if (un >= u_min * (1 - 1e-9) || rides(s, i) || rides(s, j)) {
     normal_kick(s, i, j, n, -2 * un);
     return;
   }
@@ -702,6 +1058,26 @@ static void bridge_edge(wg_ed *s, long i, long j)
   s->counts.grazing++;
 }
 
+/* A floor contact slower than rest_speed while the floor's acceleration exceeds -g ends the
+   particle's bouncing (the limit of its ever shorter bounces, or the floor's inelastic collapse):
+   it rests on the floor, its motion relative to the floor taken out as in a perfectly
+   inelastic wall collision, and rides it until the floor's acceleration falls to -g. */
+static void come_to_rest(wg_ed *s, long i, double vw)
+{
+  wg_particle *p = &s->p[i];
+  double m = wg_ed_mass(s, i), v = p->v[s->up], u = v - vw;
+  double z = wg_wall_position(&s->wall[0], s->now) + p->radius;
+  double loss = 0.5 * m * u * u;
+  ksum_add(&s->ledger.injected_wall, 0.5 * m * (vw * vw - v * v) + m * s->g * (z - p->r[s->up]) + loss);
+  ksum_add(&s->ledger.dissipated_wall, loss);
+  p->r[s->up] = z;
+  p->v[s->up] = vw;
+  if (s->t_last) s->t_last[i] = s->now;
+  s->riding[i] = 1;
+  s->counts.rests++;
+  s->counts.wall_hits++;
+}
+
 /* Reflection at a moving wall: the velocity relative to the wall reverses and shrinks by
    eps_wall.  A particle pressed onto a wall that accelerates towards it would bounce ever
    more often (the wall's inelastic collapse); it leaves with at least wall_min_speed, the
@@ -714,6 +1090,13 @@ static void wall_collide(wg_ed *s, long i, int w)
   double vw = wg_wall_velocity(&s->wall[w], s->now);
   double v = p->v[s->up];
   double u = v - vw;
+  /* (the margin keeps a particle just lifted off, at a_w = -g to round-off, from resting again
+     at the same instant) */
+  if (RESTING(s) && side > 0 && fabs(u) < s->rest_speed &&
+      wg_wall_acceleration(&s->wall[w], s->now) > -s->g * (1 - LIFT_MARGIN)) {
+    come_to_rest(s, i, vw);
+    return;
+  }
   double e = s->eps_wall;
   if (s->t_last) {
     if (s->now - s->t_last[i] < s->tc) e = 1;
@@ -782,6 +1165,13 @@ static int physical_event(wg_ed *s, long i)
   case WG_EV_WALL_HIT:
     advance(s, i, s->now);
     wall_collide(s, i, (int)j);
+    s->ev[i].count++;
+    predict_all(s, i, 1);
+    return WG_OK;
+  case WG_EV_LIFT_OFF:
+    advance(s, i, s->now);
+    s->riding[i] = 0;
+    s->counts.lift_offs++;
     s->ev[i].count++;
     predict_all(s, i, 1);
     return WG_OK;
@@ -941,6 +1331,7 @@ static int renumber_by_cell(wg_ed *s)
   permute(s->id, sizeof *s->id, n, order, done);
   if (s->mass) permute(s->mass, sizeof *s->mass, n, order, done);
   if (s->t_last) permute(s->t_last, sizeof *s->t_last, n, order, done);
+  if (s->riding) permute(s->riding, sizeof *s->riding, n, order, done);
   if (s->wet) {
     permute(s->nbond, sizeof *s->nbond, n, order, done);
     permute(s->bond, sizeof *s->bond * (size_t)s->bond_cap, n, order, done);
@@ -1004,7 +1395,7 @@ double wg_ed_ledger_residual(wg_ed *s)
   double ek, ep;
   wg_ed_energy(s, &ek, &ep);
   const wg_ledger *l = &s->ledger;
-  double in = wg_ksum_value(&l->injected_wall) + wg_ed_field_work(s);
+  double in = wg_ed_wall_work(s) + wg_ed_field_work(s);
   double out = wg_ksum_value(&l->dissipated_coll) + wg_ksum_value(&l->dissipated_wall) +
                wg_ksum_value(&l->dissipated_rupt);
   double level = ek + fabs(ep);
@@ -1055,6 +1446,10 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
   s->key = zalloc((size_t)n, sizeof *s->key, &fail);
   if (sc->mass_scaling) s->mass = zalloc((size_t)n, sizeof *s->mass, &fail);
   if (s->inelastic) s->t_last = zalloc((size_t)n, sizeof *s->t_last, &fail);
+  if (sc->rest_speed > 0 && s->nwalls && s->g > 0) {
+    s->rest_speed = sc->rest_speed;
+    s->riding = zalloc((size_t)n, sizeof *s->riding, &fail);
+  }
   if (sc->shear_force != 0) {
     s->shear = zalloc(1, sizeof *s->shear, &fail);
     s->bin = zalloc((size_t)n, sizeof *s->bin, &fail);
@@ -1192,6 +1587,7 @@ size_t wg_ed_bytes(const wg_ed *s)
                  (size_t)s->cells.ncell * sizeof(int32_t);
   if (s->mass) bytes += n * sizeof *s->mass;
   if (s->t_last) bytes += n * sizeof *s->t_last;
+  if (s->riding) bytes += n * sizeof *s->riding;
   if (s->wet) bytes += n * ((size_t)s->bond_cap * sizeof *s->bond + sizeof *s->nbond);
   if (s->shear) bytes += n * sizeof *s->bin + (size_t)s->shear->nbins * sizeof(double);
   return bytes;
@@ -1200,7 +1596,7 @@ size_t wg_ed_bytes(const wg_ed *s)
 void wg_ed_free(wg_ed *s)
 {
   free(s->p); free(s->id); free(s->slot); free(s->ev); free(s->key);
-  free(s->mass); free(s->t_last); free(s->bond); free(s->nbond); free(s->bin);
+  free(s->mass); free(s->t_last); free(s->riding); free(s->bond); free(s->nbond); free(s->bin);
   if (s->shear) wg_shear_free(s->shear);
   free(s->shear);
   wg_cells_free(&s->cells);

@@ -40,7 +40,8 @@ typedef enum {
   WG_EV_WALL_HIT,      /* contact with floor (partner 0) or lid (partner 1) */
   WG_EV_WALL_ENTER,    /* enters a wall's reach: solve for the exact contact then */
   WG_EV_CELL,          /* cell crossing (bookkeeping) */
-  WG_EV_BIN            /* crossing into the next bin of the shear field (partner: +1 / -1) */
+  WG_EV_BIN,           /* crossing into the next bin of the shear field (partner: +1 / -1) */
+  WG_EV_LIFT_OFF       /* a particle resting on the floor leaves it (floor acceleration -g) */
 } wg_event_type;
 
 /* Counts of every event type; the ledger of energy. */
@@ -49,7 +50,9 @@ typedef struct wg_counts {
       cell_crossings, stale,  /* stale: popped predictions whose partner had moved on */
       rigid,                  /* collisions at one instant in a rigid cluster (RIGID_TIME) */
       grazing,                /* bridge reflections raised to GRAZING_ANGLE */
-      bin_crossings;          /* crossings between the shear field's bins */
+      bin_crossings,          /* crossings between the shear field's bins */
+      rests,                  /* floor contacts that came to rest (rest_speed) */
+      lift_offs;              /* resting particles that left the floor */
 } wg_counts;
 
 /* Energy ledger [m g d], compensated (Kahan) sums. */
@@ -79,6 +82,11 @@ typedef struct wg_ed {
   int inelastic;               /* eps < 1 or eps_wall < 1: TC bookkeeping */
   double eps, eps_wall, tc, grazing_angle;
   double wall_min_speed;       /* least speed of a particle leaving a wall (see wall_collide) */
+  /* Resting contacts (scene key rest_speed > 0): riding[i] = 1 while particle i rests on the
+     floor and moves with it (docs/engines.md, "Resting on the floor"); NULL when off, and then
+     nothing of it runs. */
+  double rest_speed;
+  uint8_t *riding;
   /* The cosine shear field (shear.h): NULL when the scene has none.  While it acts
      (sheared = 1) every free flight, prediction and the ledger use each particle's own
      acceleration (gravity + its bin's force / m) in functions of their own; sheared = 0
@@ -163,6 +171,10 @@ static inline void wg_ed_position_of(const wg_ed *s, long id, double t, double *
 }
 
 static inline double wg_ed_mass(const wg_ed *s, long i) { return s->mass ? s->mass[i] : 1.0; }
+
+/* Work done by the walls since t = 0 up to now (booked plus the floor's work on resting
+   particles since their local times) [m g d]. */
+double wg_ed_wall_work(const wg_ed *s);
 
 /* Kinetic and potential energy of the whole system at time now [m g d]. */
 void wg_ed_energy(const wg_ed *s, double *kinetic, double *potential);

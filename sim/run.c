@@ -197,7 +197,7 @@ static int sample_series(wg_run *run)
   row[COL_TIME] = s->now;
   row[COL_KINETIC] = ek;
   row[COL_POTENTIAL] = ep;
-  row[COL_INJ_WALL] = wg_ksum_value(&s->ledger.injected_wall);
+  row[COL_INJ_WALL] = wg_ed_wall_work(s);
   row[COL_DIS_COLL] = wg_ksum_value(&s->ledger.dissipated_coll);
   row[COL_DIS_WALL] = wg_ksum_value(&s->ledger.dissipated_wall);
   row[COL_DIS_RUPT] = wg_ksum_value(&s->ledger.dissipated_rupt);
@@ -338,6 +338,14 @@ static int ckpt_write_ed(wg_run *run, hid_t f)
   if (s->t_last)
     st |= wg_h5_write(f, "state/t_last", H5T_NATIVE_DOUBLE, 1, d1, s->t_last, "tau",
                       "time of each particle's last collision (TC model)");
+  if (s->riding) {
+    st |= wg_h5_write(f, "state/riding", H5T_NATIVE_UINT8, 1, d1, s->riding, "1",
+                      "1 while the particle rests on the floor (rest_speed)");
+    unsigned long long rc[2] = {s->counts.rests, s->counts.lift_offs};
+    hsize_t d2c[1] = {2};
+    st |= wg_h5_write(f, "run/rest_counts", H5T_NATIVE_ULLONG, 1, d2c, rc, "1",
+                      "floor contacts come to rest, lift-offs");
+  }
   if (s->wet) {
     hsize_t db[1] = {(hsize_t)n * (hsize_t)s->bond_cap};
     st |= wg_h5_write(f, "state/nbond", H5T_NATIVE_UINT8, 1, d1, s->nbond, "1", "bridges per particle");
@@ -530,6 +538,11 @@ static int ckpt_load_ed(wg_run *run, hid_t f, long n, double now)
   }
   if (st == WG_OK && s->mass) st = read_into(f, ck, "state/mass", H5T_NATIVE_DOUBLE, s->mass, (hsize_t)n);
   if (st == WG_OK && s->t_last) st = read_into(f, ck, "state/t_last", H5T_NATIVE_DOUBLE, s->t_last, (hsize_t)n);
+  unsigned long long rc[2] = {0, 0};
+  if (st == WG_OK && s->riding) {
+    st = read_into(f, ck, "state/riding", H5T_NATIVE_UINT8, s->riding, (hsize_t)n);
+    if (st == WG_OK) st = read_into(f, ck, "run/rest_counts", H5T_NATIVE_ULLONG, rc, 2);
+  }
   if (st == WG_OK && s->wet) {
     st = read_into(f, ck, "state/nbond", H5T_NATIVE_UINT8, s->nbond, (hsize_t)n);
     if (st == WG_OK)
@@ -544,7 +557,7 @@ static int ckpt_load_ed(wg_run *run, hid_t f, long n, double now)
   if (st == WG_OK && s->shear) st = read_into(f, ck, "run/field", H5T_NATIVE_DOUBLE, field, 3);
   if (st != WG_OK) return st;
   s->counts = (wg_counts){counts[0], counts[1], counts[2], counts[3], counts[4], counts[5], counts[6], counts[7], counts[8],
-               counts[9], (unsigned long long)field[2]};
+               counts[9], (unsigned long long)field[2], rc[0], rc[1]};
   s->wall_stats = (wg_wall_stats){ws[0], ws[1], ws[2]};
   st = wg_ed_start(s, now);
   if (st != WG_OK) return st;
@@ -1025,6 +1038,10 @@ static int write_summary(wg_run *run, hid_t f)
     st |= wg_h5_attr_llong(g, ".", "stale_predictions", (long long)s->counts.stale);
     st |= wg_h5_attr_llong(g, ".", "rigid_collisions", (long long)s->counts.rigid);
     st |= wg_h5_attr_llong(g, ".", "grazing_reflections", (long long)s->counts.grazing);
+    if (s->riding) {
+      st |= wg_h5_attr_llong(g, ".", "rests", (long long)s->counts.rests);
+      st |= wg_h5_attr_llong(g, ".", "lift_offs", (long long)s->counts.lift_offs);
+    }
   }
   H5Gclose(g);
   return st;
@@ -1305,6 +1322,9 @@ static int stall_check(wg_run *run)
           stop ? "error" : "warning", t, rate, sc->stall_rate, more,
           shaker ? " or a bed resting on a slowly shaken floor (Gamma near or below 1)" : "",
           shaker ? ", Gamma or E*" : "");
+  if (shaker && sc->engine == WG_ENGINE_ED && sc->rest_speed == 0)
+    fprintf(stderr, "Grains resting on the floor: rest_speed (e.g. 0.01 with eps_wall < 1; "
+            "docs/engines.md) lets them ride it instead of bouncing.  ");
   if (!stop) {
     fprintf(stderr, "Going on (stall_action = stop would stop here).\n");
     return WG_OK;

@@ -468,6 +468,42 @@ double wg_wall_velocity(const wg_wall *w, double t)
   return w->A * w->omega * cos(reduced_phase(w->omega, t));
 }
 
+/* Acceleration of the wall at absolute time t. */
+double wg_wall_acceleration(const wg_wall *w, double t)
+{
+  if (w->A == 0.0 || !(w->omega > 0.0)) return 0.0;
+  return -w->A * w->omega * w->omega * sin(reduced_phase(w->omega, t));
+}
+
+/* The first time after t at which the wall's phase is theta (mod 2 pi): t itself counts only
+   when strictly later phases are meant, i.e. never (a phase equal to now is a full period
+   ahead). */
+static double next_phase_time(const wg_wall *w, double t, double theta)
+{
+  double d = theta - reduced_phase(w->omega, t);
+  if (d <= 0.0) d += WG_TWO_PI;
+  return t + d / w->omega;
+}
+
+double wg_wall_lift_off_time(const wg_wall *w, double g, double t)
+{
+  if (w->A == 0.0 || !(w->omega > 0.0) || w->side < 0) return INFINITY;
+  double inv_gamma = g / (w->A * w->omega * w->omega);
+  if (!(inv_gamma < 1.0)) return INFINITY; /* Gamma <= 1: the floor never falls faster than g */
+  return next_phase_time(w, t, asin(inv_gamma)); /* a_w = -g, falling: sin rising through 1/Gamma */
+}
+
+double wg_wall_level_time(const wg_wall *w, double t, double level, int rising)
+{
+  if (w->A == 0.0 || !(w->omega > 0.0)) return INFINITY;
+  double s = (level - w->c) / w->A;
+  if (!(fabs(s) <= 1.0)) return INFINITY;
+  double theta = asin(s); /* the rising passage; the falling one is at pi - theta */
+  if (!rising) theta = WG_PI - theta;
+  if (theta < 0.0) theta += WG_TWO_PI;
+  return next_phase_time(w, t, theta);
+}
+
 /* Reports a failed root search (unreachable by the iteration bound above) and keeps the
    conservative estimate: the bracket end on the closing side. */
 static int report_failure(const char *where)

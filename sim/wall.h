@@ -45,6 +45,20 @@ typedef enum {
 double wg_wall_position(const wg_wall *w, double t);
 double wg_wall_velocity(const wg_wall *w, double t);
 
+/* Acceleration of the wall at absolute time t. */
+double wg_wall_acceleration(const wg_wall *w, double t);
+
+/* A particle resting on a floor (side +1) rides it while the floor's acceleration stays above
+   -g and leaves it where the acceleration falls through -g: the first time after t at which
+   sin(w t) rises through 1/Gamma.  INFINITY for Gamma <= 1 (at Gamma = 1 the acceleration
+   touches -g at the top of the stroke, and the floor, curving away more slowly than the free
+   parabola, catches the particle at once), for a lid or a wall at rest. */
+double wg_wall_lift_off_time(const wg_wall *w, double g, double t);
+
+/* The first time after t at which the wall's position c + A sin(w t) passes `level` while
+   rising (rising = 1) or falling (0); INFINITY if it never does. */
+double wg_wall_level_time(const wg_wall *w, double t, double level, int rising);
+
 /* Next wall event of particle p, tau >= 0 measured from p->t0.  The wall's reach is the slab
    swept by the wall (|z - c| <= A plus the radius).  Outside it the particle gets only the
    analytic entry time (WG_WALL_ENTER); inside it the exact first root is searched until the

@@ -65,4 +65,19 @@ check "rigid-cluster collisions were resolved" grep -qE 'rigid_collisions=[1-9]'
 check "ledger still closes" bash -c "grep -oE 'ledger_residual=[^ ]+' '$tmp/j/err' | \
   awk -F= '{ n++; ok = (\$2 < 1e-9 && \$2 > -1e-9) } END { exit !(n == 1 && ok) }'"
 
+# Resting on the floor (rest_speed): a 3D wet layer at Gamma = 0.8 comes to rest; killed after a
+# checkpoint and resumed, it gives the same bytes (the resting flags are in the checkpoint).
+rest="$scenes/shake3d_5_2c.ini n=60 lx=10 ly=10 gamma=0.8 estar=1 eps=0.9 eps_wall=0.5 tg_init=0.1
+  rest_speed=0.01 t_end=12 dt_series=0.5 dt_snapshot=6 profile_bins=0 profile_start=0 dt_checkpoint=4"
+restin() { local dir=$1; shift; mkdir -p "$dir" && (cd "$dir" && "$run" $rest -q --no-volatile "$@" -o run.h5 2> err); }
+restin "$tmp/ra"
+check "resting layer runs" test -e "$tmp/ra/run.h5"
+restin "$tmp/rr" --abort-after-checkpoint 2; rc=$?
+check "resting layer: aborted after its second checkpoint (exit $rc)" test "$rc" -eq 3
+restin "$tmp/rr"
+check "resting layer: resumed run is byte-identical to the uninterrupted one" cmp -s "$tmp/ra/run.h5" "$tmp/rr/run.h5"
+"$run" "$scenes/gas3d.ini" rest_speed=0.01 -o "$tmp/bad_rest.h5" 2> "$tmp/err_rest"; rc=$?
+check "rest_speed in a periodic box: non-zero exit, both keys named" \
+  bash -c "[ $rc -ne 0 ] && grep -q \"'rest_speed'\" '$tmp/err_rest' && grep -q \"'container'\" '$tmp/err_rest' && [ ! -e '$tmp/bad_rest.h5' ]"
+
 summary

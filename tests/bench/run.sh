@@ -2,7 +2,8 @@
 # Benchmarks (numbers for the closing notes; never asserted in tests).
 # Usage: tests/bench/run.sh BENCH_BIN_DIR TOOL_BIN_DIR.  Writes tests/bench/out/bench.tsv.
 # BENCH_ONLY=peers runs only the comparison with EDMD and the baseline engine (peers.sh, which
-# reads EDMD_SRC, BENCH_BASE, REPS, SCAN_MAX); BENCH_ONLY=td_shaker only the last part
+# reads EDMD_SRC, BENCH_BASE, REPS, SCAN_MAX); BENCH_ONLY=rest only the resting beds (rest.sh);
+# BENCH_ONLY=td_shaker only the last part
 # (time-driven shaker: Verlet and Gear).
 set -eu
 benchdir=${1:?}; bindir=$(cd "${2:?}" && pwd)
@@ -39,6 +40,12 @@ if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = peers ]; then
 echo "== the event-driven engine beside EDMD and beside its own baseline commit (tests/bench/peers.sh)"
 "$here/peers.sh" "$bindir"
 [ "${BENCH_ONLY:-}" = peers ] && exit 0
+fi
+
+if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = rest ]; then
+echo "== resting beds: events per time unit resting (rest_speed), fluidized and without the rule (tests/bench/rest.sh)"
+"$here/rest.sh" "$bindir"
+[ "${BENCH_ONLY:-}" = rest ] && exit 0
 fi
 
 if [ -z "${BENCH_ONLY:-}" ]; then
