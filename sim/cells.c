@@ -240,7 +240,11 @@ double wg_cells_exit_time(const wg_cells *c, long cell, const double *r, const d
   for (int a = 0; a < c->dim; a++) {
     double lower = c->lo[a] + ix[a] * c->w[a];
     double upper = lower + c->w[a];
-    int has_lower = (c->periodic[a] || ix[a] > 0) && !(a == skip_axis && skip_dir == -1);
+    /* Under gravity a grain that came in through the lower face rising leaves through it again
+       after turning round: fall_to gives that later root, never the crossing just made, so
+       the face stays in. */
+    int fall_back = a == c->dim - 1 && g > 0;
+    int has_lower = (c->periodic[a] || ix[a] > 0) && !(a == skip_axis && skip_dir == -1 && !fall_back);
     int has_upper = (c->periodic[a] || ix[a] < c->nc[a] - 1) && !(a == skip_axis && skip_dir == 1);
     double t_up = INFINITY, t_down = INFINITY;
     if (a == c->dim - 1 && g > 0) {

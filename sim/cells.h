@@ -66,8 +66,9 @@ static inline int wg_cells_face(const wg_cells *c, long cell, int axis, int dir,
 /* Time, counted from the particle's reference point r, v (gravity g along -axis dim-1), at
    which it leaves `cell`, not earlier than tau_now; *axis and *dir tell through which face.
    The face (skip_axis, skip_dir) is left out (skip_axis = -1: none): the one just crossed,
-   so that a particle grazing a face at the top of its flight does not cross back and forth.
-   INFINITY if never. */
+   so that a particle grazing a face at the top of its flight does not cross back and forth --
+   except the lower face along gravity, which a particle that came in rising leaves through
+   again after its apex (the later root).  INFINITY if never. */
 double wg_cells_exit_time(const wg_cells *c, long cell, const double *r, const double *v,
                           double g, double tau_now, int skip_axis, int skip_dir, int *axis,
                           int *dir);

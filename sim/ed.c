@@ -999,10 +999,11 @@ static int collide(wg_ed *s, long i, long j)
   normal_kick(s, i, j, n, -(1 + e) * un);
   s->virial -= dist * (1 + e) * mu * un; /* sigma |J| */
   if (e < 1) ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
-  if (RESTING(s) && (s->riding[i] ^ s->riding[j]) && -e * un < s->wall_min_speed) {
+  if (RESTING(s) && (s->riding[i] ^ s->riding[j]) && -e * un < fmax(s->rest_speed, s->wall_min_speed)) {
     /* a free particle pressed onto a resting one by the floor's acceleration would bounce
-       ever more often, as on the floor itself: it leaves at no less than wall_min_speed */
-    double w = s->wall_min_speed;
+       ever more often, as on the floor itself.  Speeds below rest_speed count as rest; a
+       particle cannot rest on a moving one here, so it hops: it leaves at rest_speed. */
+    double w = fmax(s->rest_speed, s->wall_min_speed);
     normal_kick(s, i, j, n, w + e * un);
     ksum_add(&s->ledger.injected_wall, 0.5 * mu * (w * w - e * e * un * un));
   }

@@ -219,6 +219,23 @@ static void pairs(void)
   TH_CHECK(fabs(after + urel) < 2e-3 * fabs(urel) + 2e-4,
            "the falling grain leaves at its approach speed relative to the floor: %.6f vs %.6f",
            after, -urel);
+  /* it goes on bouncing on the resting grain (eps = 1); where a bounce is slower than rest_speed
+     it hops at rest_speed, at most (g + A w^2) / (2 rest_speed) times per time unit, never
+     every ~2 tc; either way it never sinks into the grain below */
+  unsigned long long c1 = s.counts.collisions;
+  double t1 = s.now, lowest = INFINITY;
+  for (int k = 1; k <= 400 && st == WG_OK; k++) {
+    st = wg_ed_advance(&s, t1 + k * 0.1);
+    wg_ed_position_at(&s, upper, s.now, q, u);
+    wg_ed_position_at(&s, lower, s.now, p, pv);
+    double dd = hypot(q[0] - p[0], q[1] - p[1]);
+    if (dd < lowest) lowest = dd;
+  }
+  double rate = (double)(s.counts.collisions - c1) / (s.now - t1);
+  double bound = (1 + sc.amplitude * sc.omega * sc.omega) / (2 * 0.01);
+  TH_CHECK(st == WG_OK && s.riding[lower] && lowest > 1 - 1e-9 && rate <= bound,
+           "40 time units later: the lower grain rests, the upper one never sinks into it "
+           "(least distance %.12f), %.1f collisions per time unit (<= %.0f)", lowest, rate, bound);
   double res = wg_ed_ledger_residual(&s);
   TH_CHECK(res < 1e-9, "pair on the floor: ledger closes (%.1e)", res);
   wg_ed_free(&s);
@@ -237,6 +254,47 @@ static void pairs(void)
   wg_ed_free(&s);
 }
 
+/* An inelastic grain (eps = 0.5) dropped onto a resting one settles on it: it cannot ride a
+   grain that may slide, so it hops at rest_speed, 5e-5 d high, at most (g + A w^2) /
+   (2 rest_speed) times per time unit (without that it would bounce every ~2 tc, 10^5 times). */
+static void hop_on_resting(void)
+{
+  const char *keys[] = {"dim=2", "n=2", "lx=10", "height=8", "sigma_p=0", "gamma=0.8",
+                        "estar_d=0.2", "eps=0.5", "eps_wall=0.5", "rest_speed=0.01",
+                        "tg_init_abs=0", "seed=1", "t_end=100", NULL};
+  wg_scene sc;
+  if (scene(&sc, keys)) {
+    TH_CHECK(0, "hop: scene accepted");
+    return;
+  }
+  double vw = sc.amplitude * sc.omega;
+  double r[4] = {5, 0.5, 5, 1.8}, v[4] = {0, vw, 0, 0}, rad[2] = {0.5, 0.5};
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc_state(&s, &sc, 2, r, v, rad, NULL, 0) == WG_OK, "hop: set up");
+  int st = wg_ed_advance(&s, 10);
+  long lower = s.slot[0], upper = s.slot[1];
+  unsigned long long c0 = s.counts.collisions;
+  double lowest = INFINITY, highest = 0;
+  for (int k = 1; k <= 2000 && st == WG_OK; k++) {
+    st = wg_ed_advance(&s, 10 + k * 0.01);
+    double q[3], u[3], p[3], pv[3];
+    wg_ed_position_at(&s, upper, s.now, q, u);
+    wg_ed_position_at(&s, lower, s.now, p, pv);
+    double d = hypot(q[0] - p[0], q[1] - p[1]);
+    if (d < lowest) lowest = d;
+    if (d > highest) highest = d;
+  }
+  double rate = (double)(s.counts.collisions - c0) / 20;
+  double bound = (1 + sc.amplitude * sc.omega * sc.omega) / (2 * 0.01);
+  TH_CHECK(st == WG_OK && s.riding[lower] && !s.riding[upper] && lowest > 1 - 1e-9 &&
+           highest < 1 + 1e-3 && rate > 1 && rate <= bound,
+           "hop: the upper grain lies on the resting one (distance %.9f to %.9f), hopping %.1f "
+           "times per time unit (1 < rate <= %.0f)", lowest, highest, rate, bound);
+  double res = wg_ed_ledger_residual(&s);
+  TH_CHECK(res < 1e-9, "hop: ledger closes (%.1e)", res);
+  wg_ed_free(&s);
+}
+
 int main(void)
 {
   layer_at_rest(2, 0);
@@ -247,5 +305,6 @@ int main(void)
   lift_off(2.0);
   lift_off(4.0);
   pairs();
+  hop_on_resting();
   return th_summary();
 }
