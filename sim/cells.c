@@ -46,6 +46,7 @@ int wg_cells_alloc(wg_cells *c, int dim, const double *lo, const double *len,
                    const int *periodic, double range, long n)
 {
   c->dim = dim;
+  c->turn_back = 0;
   c->ncell = 1;
   for (int a = 0; a < 3; a++) {
     if (a >= dim) {
@@ -243,7 +244,7 @@ double wg_cells_exit_time(const wg_cells *c, long cell, const double *r, const d
     /* Under gravity a grain that came in through the lower face rising leaves through it again
        after turning round: fall_to gives that later root, never the crossing just made, so
        the face stays in. */
-    int fall_back = a == c->dim - 1 && g > 0;
+    int fall_back = c->turn_back && a == c->dim - 1 && g > 0;
     int has_lower = (c->periodic[a] || ix[a] > 0) && !(a == skip_axis && skip_dir == -1 && !fall_back);
     int has_upper = (c->periodic[a] || ix[a] < c->nc[a] - 1) && !(a == skip_axis && skip_dir == 1);
     double t_up = INFINITY, t_down = INFINITY;

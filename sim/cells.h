@@ -22,6 +22,12 @@ typedef struct wg_cells {
   int stencil_size;
   long face_offset[3][2][9]; /* [axis][dir > 0] flat offsets of the face layer */
   int face_size;
+  /* 1: a particle that came in rising against gravity leaves through that face again after its
+     apex (wg_cells_exit_time).  0 (wg_cells_alloc's default): the face entered is left out for
+     good, so a particle that turns round inside a cell keeps it until its next event -- the
+     behaviour of engine version c450a5b3a17e0edb, a known defect (docs/engines.md, "Cell
+     crossings under gravity") kept until the archived figures are checked without it. */
+  int turn_back;
 } wg_cells;
 
 /* The grid over [lo, lo + len) with cells of width >= range; periodic axes need >= 3 cells. */
@@ -67,8 +73,8 @@ static inline int wg_cells_face(const wg_cells *c, long cell, int axis, int dir,
    which it leaves `cell`, not earlier than tau_now; *axis and *dir tell through which face.
    The face (skip_axis, skip_dir) is left out (skip_axis = -1: none): the one just crossed,
    so that a particle grazing a face at the top of its flight does not cross back and forth --
-   except the lower face along gravity, which a particle that came in rising leaves through
-   again after its apex (the later root).  INFINITY if never. */
+   except, with c->turn_back, the lower face along gravity, which a particle that came in
+   rising leaves through again after its apex (the later root).  INFINITY if never. */
 double wg_cells_exit_time(const wg_cells *c, long cell, const double *r, const double *v,
                           double g, double tau_now, int skip_axis, int skip_dir, int *axis,
                           int *dir);

@@ -1505,7 +1505,11 @@ static int setup_cells(wg_ed *s)
     double w = fmin(pow(volume / (CELLS_PER_PARTICLE * (double)s->n), 1.0 / s->dim), widest);
     if (w > range) range = w;
   }
-  return wg_cells_alloc(&s->cells, s->dim, lo, len, s->periodic, range, s->n);
+  int st = wg_cells_alloc(&s->cells, s->dim, lo, len, s->periodic, range, s->n);
+  /* resting grains make no events (and so no synchronisations): without turn_back a grain
+     falling onto them after its apex could pass through them unseen */
+  s->cells.turn_back = s->riding != NULL;
+  return st;
 }
 
 int wg_ed_alloc_empty(wg_ed *s, const wg_scene *sc, long n)

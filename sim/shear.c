@@ -307,11 +307,8 @@ double wg_shear_cell_exit_time(const wg_cells *c, long cell, const double *r, co
   for (int a = 0; a < c->dim; a++) {
     double lower = c->lo[a] + ix[a] * c->w[a];
     double upper = lower + c->w[a];
-    /* the face just entered is left out unless the acceleration brings the particle back to it
-       (it then leaves through it after turning round: cross_time's later root) */
-    int back = a == skip_axis && acc[a] * skip_dir > 0;
-    int has_lower = (c->periodic[a] || ix[a] > 0) && !(a == skip_axis && skip_dir == -1 && !back);
-    int has_upper = (c->periodic[a] || ix[a] < c->nc[a] - 1) && !(a == skip_axis && skip_dir == 1 && !back);
+    int has_lower = (c->periodic[a] || ix[a] > 0) && !(a == skip_axis && skip_dir == -1);
+    int has_upper = (c->periodic[a] || ix[a] < c->nc[a] - 1) && !(a == skip_axis && skip_dir == 1);
     double t_up = has_upper ? cross_time(upper - r[a], v[a], acc[a], 1, tau_now) : INFINITY;
     double t_down = has_lower ? cross_time(lower - r[a], v[a], acc[a], -1, tau_now) : INFINITY;
     if (t_up < best) { best = t_up; *axis = a; *dir = 1; }
