@@ -179,24 +179,34 @@ static void lift_off(double gamma)
   wg_ed_free(&s);
 }
 
+/* Two grains on a floor at Gamma = 0.8, one above the other: the lower one on the floor with
+   its velocity, the upper one at rest at height z_upper; eps between the grains. */
+static int stacked_pair(wg_ed *s, wg_scene *sc, const char *eps, double z_upper, const char *what)
+{
+  const char *keys[] = {"dim=2", "n=2", "lx=10", "height=8", "sigma_p=0", "gamma=0.8",
+                        "estar_d=0.2", eps, "eps_wall=0.5", "rest_speed=0.01", "tg_init_abs=0",
+                        "seed=1", "t_end=100", NULL};
+  if (scene(sc, keys)) {
+    TH_CHECK(0, "%s: scene accepted", what);
+    return 1;
+  }
+  double vw = sc->amplitude * sc->omega;
+  double r[4] = {5, 0.5, 5, z_upper}, v[4] = {0, vw, 0, 0}, rad[2] = {0.5, 0.5};
+  int ok = wg_ed_alloc_state(s, sc, 2, r, v, rad, NULL, 0) == WG_OK;
+  TH_CHECK(ok, "%s: set up", what);
+  return !ok;
+}
+
 /* A grain falling straight onto a resting one: the floor takes the push, the resting grain
    stays put, and the falling grain leaves with its speed relative to the floor reversed
    (eps = 1), as if it had hit the floor itself; two resting grains meeting side by side swap
    their velocities along the floor and both stay on it. */
 static void pairs(void)
 {
-  const char *keys[] = {"dim=2", "n=2", "lx=10", "height=8", "sigma_p=0", "gamma=0.8",
-                        "estar_d=0.2", "eps_wall=0.5", "rest_speed=0.01", "tg_init_abs=0",
-                        "seed=1", "t_end=100", NULL};
   wg_scene sc;
-  if (scene(&sc, keys)) {
-    TH_CHECK(0, "pairs: scene accepted");
-    return;
-  }
-  double vw = sc.amplitude * sc.omega;
-  double r[4] = {5, 0.5, 5, 1.6}, v[4] = {0, vw, 0, 0}, rad[2] = {0.5, 0.5};
   wg_ed s;
-  TH_CHECK(wg_ed_alloc_state(&s, &sc, 2, r, v, rad, NULL, 0) == WG_OK, "pairs: set up");
+  if (stacked_pair(&s, &sc, "eps=1", 1.6, "pairs")) return;
+  double vw = sc.amplitude * sc.omega, rad[2] = {0.5, 0.5};
   int st = wg_ed_advance(&s, 1e-6);
   long lower = s.slot[0], upper = s.slot[1];
   TH_CHECK(st == WG_OK && s.riding[lower] && !s.riding[upper], "the lower grain rests");
@@ -259,18 +269,9 @@ static void pairs(void)
    (2 rest_speed) times per time unit (without that it would bounce every ~2 tc, 10^5 times). */
 static void hop_on_resting(void)
 {
-  const char *keys[] = {"dim=2", "n=2", "lx=10", "height=8", "sigma_p=0", "gamma=0.8",
-                        "estar_d=0.2", "eps=0.5", "eps_wall=0.5", "rest_speed=0.01",
-                        "tg_init_abs=0", "seed=1", "t_end=100", NULL};
   wg_scene sc;
-  if (scene(&sc, keys)) {
-    TH_CHECK(0, "hop: scene accepted");
-    return;
-  }
-  double vw = sc.amplitude * sc.omega;
-  double r[4] = {5, 0.5, 5, 1.8}, v[4] = {0, vw, 0, 0}, rad[2] = {0.5, 0.5};
   wg_ed s;
-  TH_CHECK(wg_ed_alloc_state(&s, &sc, 2, r, v, rad, NULL, 0) == WG_OK, "hop: set up");
+  if (stacked_pair(&s, &sc, "eps=0.5", 1.8, "hop")) return;
   int st = wg_ed_advance(&s, 10);
   long lower = s.slot[0], upper = s.slot[1];
   unsigned long long c0 = s.counts.collisions;
