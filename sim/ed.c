@@ -220,28 +220,17 @@ void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v)
   double dt = t - p->t;
   if (rides(s, i)) {
     rider_at(s, i, t, r, v);
-    for (int k = 0; k < s->dim - 1; k++) {
-      r[k] = fmod(r[k], s->box[k]);
-      if (r[k] < 0) r[k] += s->box[k];
-    }
-    return;
-  }
-  if (SHEARED(s)) {
+  } else if (SHEARED(s)) {
     flight_at(s, i, t, r, v);
-    for (int k = 0; k < s->dim; k++)
-      if (s->periodic[k]) {
-        r[k] = fmod(r[k], s->box[k]);
-        if (r[k] < 0) r[k] += s->box[k];
-      }
-    return;
-  }
-  for (int k = 0; k < s->dim; k++) {
-    r[k] = p->r[k] + p->v[k] * dt;
-    v[k] = p->v[k];
-  }
-  if (s->g > 0) {
-    r[s->up] -= 0.5 * s->g * dt * dt;
-    v[s->up] -= s->g * dt;
+  } else {
+    for (int k = 0; k < s->dim; k++) {
+      r[k] = p->r[k] + p->v[k] * dt;
+      v[k] = p->v[k];
+    }
+    if (s->g > 0) {
+      r[s->up] -= 0.5 * s->g * dt * dt;
+      v[s->up] -= s->g * dt;
+    }
   }
   for (int k = 0; k < s->dim; k++)
     if (s->periodic[k]) {
@@ -680,7 +669,7 @@ static void free_at_now(const wg_ed *s, long i, double *r, double *v)
 
 /* Events of the pair (i, j), exactly one of which rests on the floor; the overlap and edge
    rules are those of predict_pair. */
-static void predict_rest_pair(const wg_ed *s, long i, long j, candidate *best)
+static void predict_rest_pair(const wg_ed *s, long i, long j, double t_lift, candidate *best)
 {
   long q = s->riding[i] ? i : j, f = q == i ? j : i;
   const wg_wall *floor = &s->wall[0];
@@ -703,11 +692,11 @@ static void predict_rest_pair(const wg_ed *s, long i, long j, candidate *best)
   }
   double sigma = s->p[q].radius + s->p[f].radius;
   int bonded = s->wet && wg_ed_bonded(s, i, j);
-  /* Only events before the best so far, before q lifts off and before f falls below the
-     floor's lowest point (it meets the floor first) matter. */
+  /* Only events before the best so far, before q lifts off (t_lift) and before f falls below
+     the floor's lowest point (it meets the floor first) matter. */
   double drop = rf[up] - (floor->c - floor->A + s->p[f].radius);
   double t_floor = (vf[up] + sqrt(fmax(vf[up] * vf[up] + 2 * s->g * drop, 0))) / s->g;
-  double T = fmin(fmin(best->t, wg_wall_lift_off_time(floor, s->g, s->now)) - s->now, t_floor);
+  double T = fmin(fmin(best->t, t_lift) - s->now, t_floor);
   if (!(T > 0)) T = 0;
   double tau;
   int found;
@@ -766,6 +755,7 @@ static void predict_pairs_resting(const wg_ed *s, long i, const long *cells, int
   probe_at_now(s, i, &pr);
   int qi = s->riding[i];
   if (qi) rider_at(s, i, s->now, pr.r, pr.v);
+  double t_lift = wg_wall_lift_off_time(&s->wall[0], s->g, s->now);
   const int32_t *head = s->cells.head, *next = s->cells.next;
   for (int k = 0; k < ncells; k++)
     for (int32_t j = head[cells[k]]; j >= 0; j = next[j]) {
@@ -773,7 +763,7 @@ static void predict_pairs_resting(const wg_ed *s, long i, const long *cells, int
       int qj = s->riding[j];
       if (!qi && !qj) predict_pair(s, &pr, j, best, s->dim, s->wet);
       else if (qi && qj) predict_riders_pair(s, &pr, j, best);
-      else predict_rest_pair(s, i, j, best);
+      else predict_rest_pair(s, i, j, t_lift, best);
     }
 }
 
@@ -996,17 +986,21 @@ static int collide(wg_ed *s, long i, long j)
   }
   if (RESTING(s)) hold_or_lift(s, i, j, n, +1, (1 + e) * un);
   double mu = pair_mass(s, i, j, n);
-  normal_kick(s, i, j, n, -(1 + e) * un);
-  s->virial -= dist * (1 + e) * mu * un; /* sigma |J| */
-  if (e < 1) ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
-  if (RESTING(s) && (s->riding[i] ^ s->riding[j]) && -e * un < fmax(s->rest_speed, s->wall_min_speed)) {
+  double du = -(1 + e) * un;
+  if (RESTING(s) && (s->riding[i] ^ s->riding[j])) {
     /* a free particle pressed onto a resting one by the floor's acceleration would bounce
        ever more often, as on the floor itself.  Speeds below rest_speed count as rest; a
-       particle cannot rest on a moving one here, so it hops: it leaves at rest_speed. */
-    double w = fmax(s->rest_speed, s->wall_min_speed);
-    normal_kick(s, i, j, n, w + e * un);
-    ksum_add(&s->ledger.injected_wall, 0.5 * mu * (w * w - e * e * un * un));
+       particle cannot rest on a moving one here, so it hops: it leaves at rest_speed, the
+       floor's work paying the difference. */
+    double hop = fmax(s->rest_speed, s->wall_min_speed);
+    if (-e * un < hop) {
+      du = hop - un;
+      ksum_add(&s->ledger.injected_wall, 0.5 * mu * (hop * hop - e * e * un * un));
+    }
   }
+  normal_kick(s, i, j, n, du);
+  s->virial -= dist * (1 + e) * mu * un; /* sigma |J| */
+  if (e < 1) ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
   s->counts.collisions++;
   if (s->wet && !wg_ed_bonded(s, i, j)) {
     int st = bond_add_one(s, i, j);

@@ -57,14 +57,22 @@ static void gaps(const wg_ed *s, double *rest_gap, double *overlap)
    the same layer keeps bouncing (the floor's inelastic collapse at wall_min_speed). */
 static void layer_at_rest(int dim, int wet_run)
 {
-  char n[32];
   const char *wet = wet_run ? "wet" : "dry";
-  snprintf(n, sizeof n, "n=%d", dim == 2 ? 12 : 30);
-  const char *keys[] = {dim == 2 ? "dim=2" : "dim=3", n, "lx=24", "height=6", "gamma=0.8",
-                        "eps=0.9", "eps_wall=0.5", "rest_speed=0.01", "seed=3", "t_end=100",
-                        wet_run ? "s_crit=0.0711" : "s_crit=0", wet_run ? "f_b=4" : "estar_d=0.5",
-                        wet_run ? "estar=1" : "tg_init_abs=0.05", wet_run ? "tg_init=0.2" : "sigma_p=0.06",
-                        dim == 3 ? "ly=24" : "sigma_p=0.06", NULL};
+  const char *keys[16] = {dim == 2 ? "dim=2" : "dim=3", dim == 2 ? "n=12" : "n=30", "lx=24",
+                          "height=6", "gamma=0.8", "eps=0.9", "eps_wall=0.5", "rest_speed=0.01",
+                          "seed=3", "t_end=100"};
+  int nk = 10;
+  if (wet_run) {
+    keys[nk++] = "s_crit=0.0711";
+    keys[nk++] = "f_b=4";
+    keys[nk++] = "estar=1";
+    keys[nk++] = "tg_init=0.2";
+  } else {
+    keys[nk++] = "estar_d=0.5";
+    keys[nk++] = "tg_init_abs=0.05";
+  }
+  if (dim == 3) keys[nk++] = "ly=24";
+  keys[nk] = NULL;
   wg_scene sc;
   if (scene(&sc, keys)) {
     TH_CHECK(0, "%dD %s layer: scene accepted", dim, wet);
