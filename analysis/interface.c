@@ -11,8 +11,9 @@
      relax      A~_d(t) of several seeds averaged per snapshot, exponential fit, mu_f (Eq. 5.13)
      spacetime  number and bridge density along x against time, one row per (t, x) cell
      powerfit   y = a x^beta fitted to two columns of a table (a_g = a E~*^beta, Fig. 5.2b)
-   The coarsening modes (droplet counts, crystalline domains, plug MSD) are to be added as
-   further modes sharing the field and the component labelling below.
+     droplets   2D: fluid droplets per frame, the regimes, N_f against T_g, their spacing
+     domains    3D: crystalline domains per frame, their area, N_d against t (Ostwald)
+     plug       2D: the plug's centre over seeds, its mean square displacement and fit
 
    The phase mask: a cell is gas where T_g / E_cb lies above t_fg, solid below t_sf, fluid in
    between.  t_fg is Otsu's cut of log10(T_g / E_cb) over the cells of every run given (the
@@ -25,6 +26,7 @@
 #include <gsl/gsl_fit.h>
 #include <gsl/gsl_multifit.h>
 #include <gsl/gsl_multifit_nlinear.h>
+#include <gsl/gsl_rng.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -38,9 +40,10 @@
 #define PROG "wetgran-interface"
 #define T_SF_DEFAULT 1e-2     /* orderparam's solid cut (T_g / E_cb) */
 #define MIN_SEPARATION 0.3    /* Otsu's classes closer than this (decades) are one phase */
+#define MIN_SEPARATION_Z 0.1  /* ... for the coordination: a ratio 1.26, a bridge per grain at z = 4 */
 #define MAX_COLS 64
 
-enum field_kind { FIELD_TEMPERATURE, FIELD_DENSITY, FIELD_BRIDGES };
+enum field_kind { FIELD_TEMPERATURE, FIELD_DENSITY, FIELD_BRIDGES, FIELD_COORDINATION };
 enum source_kind { SOURCE_AUTO, SOURCE_PROFILE, SOURCE_SNAPSHOTS, SOURCE_MAPS };
 enum phase { PH_GAS = 0, PH_FLUID = 1, PH_SOLID = 2 };
 
@@ -58,6 +61,13 @@ typedef struct options {
   double xmin, xmax;      /* powerfit range */
   const char *xcol, *ycol;
   const char *h5;         /* ag: also write the table as HDF5 */
+  double min_width;       /* droplets: narrower dense stretches are not droplets [d] */
+  long min_cells;         /* domains: smaller crystalline components are not domains */
+  double sp0, sp1;        /* droplets: the spacing's window; NAN: the coalescence regime */
+  int tracks;             /* plug: the centres per run and frame, not the MSD */
+  int smooth;             /* droplets: frames of the running median of N_f (odd) */
+  int t_sf_given;         /* domains: --t-sf given (the temperature's cut) */
+  int field_given;        /* --field given (domains' default is the coordination) */
 } options;
 
 /* A coarse-grained lateral field of one run: nx * ny cells (ny = 1 for a 2D run, whose
@@ -106,6 +116,30 @@ static int usage(FILE *o, int rc)
     "                      mu_f = 1 / ((2 pi)^2 S tau) (Eq. 5.13)\n"
     "  spacetime RUN.h5    rows t x number_density bridge_density per snapshot and x cell\n"
     "                      (gnuplot: plot F using 1:2:3 with image)\n"
+    "  droplets RUN.h5 ... 2D, per frame (map or snapshot): file t periods (t/T_driv) n_f (dense\n"
+    "                      stretches at least --min-width d wide, once gas stretches narrower\n"
+    "                      than that are filled) n_f_smooth dense_fraction tg_ecb (mean\n"
+    "                      T_g/E_cb) mean_spacing positions; then per run (comment lines) the\n"
+    "                      regimes (Sec. 5.3.1: on N_f's running median over --smooth K frames\n"
+    "                      (5): nucleation to its maximum t0, coalescence until it first reaches\n"
+    "                      its least value after t0, t1), the fit (smoothed N_f)\n"
+    "                      N_f = c (T_g/E_cb)^(-1/2) over [t0, t1] with the free exponent beside it\n"
+    "                      (Fig. 5.19), and the spacing of adjacent droplets over the smoothing\n"
+    "                      window at t0 or --spacing A:B (mean, sd, median; Fig. 5.16's inset)\n"
+    "  domains RUN.h5 ...  3D, per frame: file t periods n_d (crystalline domains) area_fraction\n"
+    "                      mean_area [d^2]; a cell is crystalline where its coordination z =\n"
+    "                      2 n_cb / n (bridges per grain) lies above the cut (Otsu's over the run's\n"
+    "                      frames in --from/--to, or --t-fg Z; --field or --t-sf for T_g/E_cb < X\n"
+    "                      instead); domains are its periodic\n"
+    "                      4-connected components of at least --min-cells (2) cells; then the fit\n"
+    "                      n_d = a (t/T_driv)^beta over --xmin < t/T_driv <= --xmax (Fig. 5.21)\n"
+    "  plug RUN.h5 ...     2D seeds of one system: the plug (longest dense stretch) per frame, its\n"
+    "                      interfaces placed where the log field crosses the cut, its centre their\n"
+    "                      mean, unwrapped over the periodic box; rows t periods msd msd_over_lx2\n"
+    "                      err n: sigma_rw(t) = <(x(t) - x(t_first))^2> over the runs; then the fit\n"
+    "                      sigma_rw/L_x^2 = D_x (t/T_driv)^alpha over --xmin < t/T_driv <= --xmax\n"
+    "                      with errors from the runs resampled (bootstrap; Fig. 5.24); --tracks:\n"
+    "                      rows file t periods x left right instead (Fig. 5.23)\n"
     "  powerfit --x COL --y COL TABLE\n"
     "                      y = a x^beta (GSL Levenberg-Marquardt, start from the log-log line)\n"
     "                      over xmin < x <= xmax (default 0 < x <= 1): rows key value error\n"
@@ -121,7 +155,8 @@ static int usage(FILE *o, int rc)
     "  --window W          ag, field, strip: one row (set) per window [t, t + W) of snapshots\n"
     "                      from --from on (one cut pooled over every window of every run);\n"
     "                      columns t_from, t_to give the snapshots' times averaged over\n"
-    "  --field temperature|density|bridges  the field the mask is cut on (default temperature)\n"
+    "  --field temperature|density|bridges|coordination  the field the mask is cut on\n"
+    "                      (default temperature; domains: coordination, bridges per grain)\n"
     "  --t-fg X            fix the gas cut (T_g/E_cb, or density) instead of Otsu's\n"
     "  --t-sf X            solid below this T_g/E_cb (default 0.01)\n"
     "  --ends EF:EG        E*_f-fgc and E*_fgc-g: estar_tilde = (E* - EF)/(EG - EF)\n"
@@ -131,7 +166,10 @@ static int usage(FILE *o, int rc)
     "                      does not bracket is nan (and E~* with it); not with --window\n"
     "  --h5 FILE          ag: also write the table to FILE (HDF5: /ag/<column>, one value\n"
     "                      per run; /ag/file the run names; attribute threshold on /ag)\n"
-    "  --fsmax F, --sigma S, --x COL, --y COL, --xmin X, --xmax X  (strip, relax, powerfit)\n"
+    "  --fsmax F, --sigma S, --x COL, --y COL, --xmin X, --xmax X  (strip, relax, powerfit;\n"
+    "                      --xmin/--xmax in driving periods for domains and plug: default all)\n"
+    "  --min-width W, --spacing A:B, --smooth K (droplets), --min-cells K (domains),\n"
+    "  --tracks (plug)\n"
     "Thresholds: Otsu's two-class cut of log10 of the field over the cells of every run given\n"
     "(a '# threshold' line gives it with the two classes' means; classes less than 0.3 decades\n"
     "apart are one phase, and the cut is then refused unless --t-fg is given).\n"
@@ -513,8 +551,16 @@ static double cell_value(const field *fd, size_t j, enum field_kind k)
   switch (k) {
   case FIELD_TEMPERATURE: return isfinite(fd->tg[j]) && fd->tg[j] > 0 ? log10(fd->tg[j] / fd->e_cb) : INFINITY;
   case FIELD_DENSITY: return fd->n[j] > 0 ? log10(fd->n[j]) : -INFINITY;
+  case FIELD_COORDINATION: /* bridges per grain: two ends per bridge */
+    return fd->n[j] > 0 && fd->ncb[j] > 0 ? log10(2 * fd->ncb[j] / fd->n[j]) : -INFINITY;
   default: return fd->ncb[j] > 0 ? log10(fd->ncb[j]) : -INFINITY;
   }
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+  int x = *(const int *)a, y = *(const int *)b;
+  return (x > y) - (x < y);
 }
 
 static int cmp_double(const void *a, const void *b)
@@ -544,11 +590,18 @@ static double otsu(const double *x, size_t n, double *m1, double *m2)
   return cut;
 }
 
+static const char *field_name(enum field_kind k)
+{
+  static const char *name[] = {"T_g/E_cb", "number_density", "bridge_density", "coordination"};
+  return name[k];
+}
+
 /* The cut (log10) from all fields' cells; prints the '# threshold' line.  Empty cells (infinite
    values) are left out of the classes: they are gas whatever the cut. */
 static int pooled_cut(field *fds, int nf, const options *o, double *cut)
 {
-  const char *name = o->field == FIELD_TEMPERATURE ? "T_g/E_cb" : o->field == FIELD_DENSITY ? "number_density" : "bridge_density";
+  const char *name = field_name(o->field);
+  double sep = o->field == FIELD_COORDINATION ? MIN_SEPARATION_Z : MIN_SEPARATION;
   if (isfinite(o->t_fg)) {
     *cut = log10(o->t_fg);
     printf("# threshold %s = %.6g (given)\n", name, o->t_fg);
@@ -567,13 +620,13 @@ static int pooled_cut(field *fds, int nf, const options *o, double *cut)
   double m1, m2;
   *cut = m >= 2 ? otsu(x, m, &m1, &m2) : NAN;
   free(x);
-  if (!isfinite(*cut) || m2 - m1 < MIN_SEPARATION) {
+  if (!isfinite(*cut) || m2 - m1 < sep) {
     fprintf(stderr, PROG ": %s%s: the cells' %s form one class (Otsu's classes %.3g decades apart, "
             "fewer than %.2g): no two phases to cut; give --t-fg\n", fds[0].file, nf > 1 ? " ..." : "",
-            name, isfinite(*cut) ? m2 - m1 : 0.0, MIN_SEPARATION);
+            name, isfinite(*cut) ? m2 - m1 : 0.0, sep);
     return 1;
   }
-  printf("# threshold %s = %.6g: Otsu's cut of log10 over %zu cells of %d run(s); class means %.4g and %.4g "
+  printf("# threshold %s = %.6g: Otsu's cut of log10 over %zu cells of %d field(s); class means %.4g and %.4g "
          "(%.2f decades apart)\n", name, pow(10, *cut), m, nf, pow(10, m1), pow(10, m2), m2 - m1);
   return 0;
 }
@@ -818,7 +871,7 @@ static int write_ag_h5(const char *path, int nf, const char **files, double (*co
   if (!rc) rc = wg_h5_attr_strings(f, "/ag", "file", nf, files) != WG_OK;
   if (!rc) rc = wg_h5_attr_strings(f, "/ag", "shape", nf, shapes) != WG_OK;
   if (!rc) rc = wg_h5_attr_double(f, "/ag", "threshold", pow(10, cut)) != WG_OK;
-  if (!rc) rc = wg_h5_attr_string(f, "/ag", "threshold_field", o->field == FIELD_TEMPERATURE ? "T_g/E_cb" : o->field == FIELD_DENSITY ? "number_density" : "bridge_density") != WG_OK;
+  if (!rc) rc = wg_h5_attr_string(f, "/ag", "threshold_field", field_name(o->field)) != WG_OK;
   if (wg_h5_close(f) != WG_OK) rc = 1;
   if (!rc && rename(tmp, path) != 0) {
     fprintf(stderr, PROG ": %s: cannot rename from %s\n", path, tmp);
@@ -1293,6 +1346,519 @@ static int mode_powerfit(const char *path, const options *o)
   return st != GSL_SUCCESS;
 }
 
+/* ---- coarsening: frame by frame (droplets, domains, plug) -------------------------------- */
+
+/* Every frame of one run as its own field (maps: one read of each dataset; snapshots: one
+   snapshot per frame), frames with time in [--from, --to].  The cut (log10) is Otsu's over
+   all of the run's frames unless given; each frame is masked with it. */
+typedef struct frames {
+  int n;
+  field *f;
+  double cut;
+} frames;
+
+static void frames_free(frames *fr)
+{
+  for (int k = 0; k < fr->n; k++) field_free(&fr->f[k]);
+  free(fr->f);
+  fr->f = NULL;
+  fr->n = 0;
+}
+
+static int load_frames(const char *file, const options *o, frames *fr, int cut_given, double cut)
+{
+  memset(fr, 0, sizeof *fr);
+  double *t = NULL;
+  hsize_t nt = 0;
+  if (run_times(file, o, &t, &nt)) return 1;
+  int rc = 0;
+  fr->f = calloc(nt ? nt : 1, sizeof *fr->f);
+  if (!fr->f) rc = 1;
+  hid_t f = rc ? -1 : wg_run_open(file);
+  if (f < 0) rc = 1;
+  field head = {.file = file};
+  if (!rc) rc = run_head(f, &head);
+  int maps = !rc && pick_source(f, &head, o, 0) == SOURCE_MAPS;
+  if (maps) {
+    /* all frames at once: frames x cells per field */
+    int rank;
+    hsize_t dims[8];
+    rc = wg_h5_dims(f, MAPS "number_density/value", &rank, dims) != WG_OK || rank != (head.dim == 3 ? 3 : 2);
+    size_t c = rc ? 0 : (size_t)dims[rank - 1] * (head.dim == 3 ? dims[1] : 1);
+    double *b[3] = {NULL, NULL, NULL};
+    static const char *p[3] = {MAPS "number_density/value", MAPS "bridge_density/value", MAPS "temperature/value"};
+    for (int q = 0; q < 3 && !rc; q++)
+      rc = !(b[q] = malloc(sizeof(double) * c * nt)) || wg_h5_read(f, p[q], H5T_NATIVE_DOUBLE, b[q]);
+    for (hsize_t k = 0; k < nt && !rc; k++) {
+      if (t[k] < o->t0 || t[k] > o->t1) continue;
+      field *fd = &fr->f[fr->n];
+      *fd = head;
+      fd->nx = (int)dims[rank - 1];
+      fd->ny = head.dim == 3 ? (int)dims[1] : 1;
+      if ((rc = field_alloc(fd))) break;
+      fr->n++;
+      for (size_t j = 0; j < c; j++) {
+        fd->n[j] = b[0][k * c + j];
+        fd->ncb[j] = b[1][k * c + j];
+        fd->tg[j] = fd->n[j] > 0 ? b[2][k * c + j] : NAN;
+      }
+      fd->t_from = fd->t_to = t[k];
+    }
+    for (int q = 0; q < 3; q++) free(b[q]);
+  }
+  if (f >= 0) wg_h5_close(f);
+  for (hsize_t k = 0; k < nt && !rc && !maps; k++) {
+    if (t[k] < o->t0 || t[k] > o->t1) continue;
+    if ((rc = load_field(file, o, &fr->f[fr->n], (long)k))) break;
+    fr->n++;
+  }
+  free(t);
+  if (!rc && fr->n == 0) {
+    fprintf(stderr, PROG ": %s: no frame in [--from, --to]\n", file);
+    rc = 1;
+  }
+  if (!rc && !cut_given) rc = pooled_cut(fr->f, fr->n, o, &cut);
+  else if (!rc && isfinite(o->t_fg)) cut = log10(o->t_fg);
+  fr->cut = cut;
+  for (int k = 0; k < fr->n && !rc; k++) make_mask(&fr->f[k], o, cut);
+  if (rc) frames_free(fr);
+  return rc;
+}
+
+/* 0 when the run has dimension 'dim'; else 1, with 'why' on stderr (or the file's own error). */
+static int need_dim(const char *file, int dim, const char *why)
+{
+  hid_t f = wg_run_open(file);
+  if (f < 0) return 1;
+  field head = {.file = file};
+  int rc = run_head(f, &head);
+  wg_h5_close(f);
+  if (!rc && head.dim != dim) {
+    fprintf(stderr, PROG ": %s: %s\n", file, why);
+    rc = 1;
+  }
+  return rc;
+}
+
+/* The driving period T_driv = 2 pi / omega, omega = Gamma g / (A omega), A omega from E*
+   (wetgran-run's shaker_driving); NAN for a run without them. */
+static double t_driv(const char *file)
+{
+  hid_t f = wg_run_open(file);
+  if (f < 0) return NAN;
+  double gam, es, ecb, g;
+  param(f, file, "gamma", &gam, 0), param(f, file, "estar", &es, 0), param(f, file, "e_cb", &ecb, 0);
+  param(f, file, "gravity", &g, 0);
+  wg_h5_close(f);
+  if (!isfinite(g)) g = 1; /* wetgran-run's default */
+  if (!(gam > 0) || !(es > 0) || !(ecb > 0)) return NAN;
+  return 2 * M_PI * sqrt(2 * es * ecb) / (gam * g);
+}
+
+/* The dense stretches of a 2D frame's row (periodic): start cell s[k] and length len[k] in
+   cells, the stretch running s, s+1, ... (mod nx).  A row all dense is one stretch of nx
+   cells starting at 0.  Returns their number. */
+static int stretches(const field *fd, int *s, int *len)
+{
+  int nx = fd->nx, m = 0, g = -1;
+  for (int i = 0; i < nx && g < 0; i++)
+    if (fd->phase[i] == PH_GAS) g = i;
+  if (g < 0) {
+    s[0] = 0, len[0] = nx;
+    return 1;
+  }
+  for (int k = 1; k <= nx; k++) { /* from the cell after a gas cell, once round */
+    int i = (g + k) % nx;
+    if (fd->phase[i] == PH_GAS) continue;
+    if (fd->phase[(i + nx - 1) % nx] == PH_GAS) s[m] = i, len[m++] = 0;
+    len[m - 1]++;
+  }
+  return m;
+}
+
+/* Fills the gas stretches of a 2D frame's row narrower than minw cells that lie between dense
+   cells: one noisy cell must not split a droplet in two. */
+static void close_gaps(field *fd, int minw)
+{
+  int nx = fd->nx, d = -1;
+  for (int i = 0; i < nx && d < 0; i++)
+    if (fd->phase[i] != PH_GAS) d = i;
+  if (d < 0) return;
+  for (int k = 1; k <= nx; k++) { /* from the cell after a dense cell, once round */
+    int i = (d + k) % nx, len = 0;
+    if (fd->phase[i] != PH_GAS) continue;
+    while (len < nx && fd->phase[(i + len) % nx] == PH_GAS) len++;
+    if (len < minw)
+      for (int j = 0; j < len; j++) fd->phase[(i + j) % nx] = PH_FLUID;
+    k += len - 1;
+  }
+}
+
+/* The position of the cut between the centres of cells a (dense) and b (gas, next to it
+   along +x or -x): linear in the log field, so an interface is placed to better than a cell.
+   Returns the offset from a's centre towards b, in cells, in [0, 1]. */
+static double cut_offset(const field *fd, const options *o, int a, int b, double cut)
+{
+  double va = cell_value(fd, (size_t)a, o->field), vb = cell_value(fd, (size_t)b, o->field);
+  if (!isfinite(va) || !isfinite(vb) || va == vb) return 0.5;
+  double u = (cut - va) / (vb - va);
+  return u < 0 ? 0 : u > 1 ? 1 : u;
+}
+
+/* ---- droplets (2D): N_f(t), positions, spacing; the coalescence regime ----------------- */
+
+/* The droplets of a 2D frame (gaps narrower than minw cells filled first): their centres,
+   sorted, in pos; the dense share of the row in *dense.  Returns their number. */
+static int droplet_centres(field *fd, int minw, int *s, int *len, double *pos, double *dense)
+{
+  close_gaps(fd, minw);
+  int m = stretches(fd, s, len), nd = 0;
+  double dx = fd->lx / fd->nx, cells = 0;
+  for (int q = 0; q < m; q++) {
+    cells += len[q];
+    if (len[q] >= minw) pos[nd++] = fmod((s[q] + 0.5 * len[q]) * dx, fd->lx);
+  }
+  *dense = cells / fd->nx;
+  qsort(pos, nd, sizeof *pos, cmp_double);
+  return nd;
+}
+
+static double gap_after(const double *pos, int nd, int q, double lx)
+{
+  return q + 1 < nd ? pos[q + 1] - pos[q] : pos[0] + lx - pos[q];
+}
+
+static int mode_droplets(int nf, char **files, const options *o)
+{
+  int rc = 0;
+  printf("file\tt\tperiods\tn_f\tn_f_smooth\tdense_fraction\ttg_ecb\tmean_spacing\tpositions\n");
+  for (int r = 0; r < nf && !rc; r++) {
+    frames fr;
+    if (need_dim(files[r], 2, "droplets needs a 2D run (domains is the 3D mode)")) return 1;
+    if ((rc = load_frames(files[r], o, &fr, 0, NAN))) break;
+    int nx = fr.f[0].nx, minw = (int)ceil(o->min_width / (fr.f[0].lx / nx) - 1e-9), h = o->smooth / 2;
+    if (minw < 1) minw = 1;
+    double td = t_driv(files[r]), lx = fr.f[0].lx, dense;
+    int *s = malloc(sizeof(int) * nx), *len = malloc(sizeof(int) * nx);
+    int *cnt = malloc(sizeof(int) * fr.n), *sm = malloc(sizeof(int) * fr.n);
+    double *tg = malloc(sizeof(double) * fr.n), *pos = malloc(sizeof(double) * nx);
+    double *gaps = malloc(sizeof(double) * (size_t)nx * fr.n);
+    if (!s || !len || !cnt || !sm || !tg || !pos || !gaps) rc = 1;
+    for (int k = 0; k < fr.n && !rc; k++) {
+      const field *fd = &fr.f[k];
+      double nsum = 0, tsum = 0;
+      for (int i = 0; i < nx; i++)
+        if (fd->n[i] > 0 && isfinite(fd->tg[i])) nsum += fd->n[i], tsum += fd->n[i] * fd->tg[i];
+      tg[k] = nsum > 0 ? tsum / nsum / fd->e_cb : NAN;
+      cnt[k] = droplet_centres(&fr.f[k], minw, s, len, pos, &dense);
+    }
+    /* the count smoothed against flicker: running median of --smooth frames, the window
+       shrunk symmetrically at the ends */
+    for (int k = 0; k < fr.n && !rc; k++) {
+      int w[64], m = 0, hk = h < k ? h : k;
+      if (hk > fr.n - 1 - k) hk = fr.n - 1 - k;
+      for (int j = k - hk; j <= k + hk; j++) w[m++] = cnt[j];
+      qsort(w, m, sizeof *w, cmp_int);
+      sm[k] = w[m / 2];
+    }
+    for (int k = 0; k < fr.n && !rc; k++) {
+      const field *fd = &fr.f[k];
+      int nd = droplet_centres(&fr.f[k], minw, s, len, pos, &dense);
+      printf("%s\t%.10g\t%.6g\t%d\t%d\t%.4g\t%.6g\t%.6g\t", files[r], fd->t_from, fd->t_from / td, nd, sm[k], dense,
+             tg[k], nd > 1 ? lx / nd : NAN);
+      for (int q = 0; q < nd; q++) printf("%s%.4g", q ? "," : "", pos[q]);
+      printf("%s\n", nd ? "" : "-");
+    }
+    if (!rc) {
+      /* the regimes (Sec. 5.3.1) on the smoothed count: nucleation while N_f grows, to its
+         first maximum t0; coalescence until it first reaches its least value after t0, t1
+         (later, drops split and re-nucleate: the reordering regimes) */
+      int k0 = 0, k1;
+      for (int k = 1; k < fr.n; k++)
+        if (sm[k] > sm[k0]) k0 = k;
+      k1 = k0;
+      for (int k = k0 + 1; k < fr.n; k++)
+        if (sm[k] < sm[k1]) k1 = k;
+      printf("# %s: nucleation to t0 = %.6g (N_f reaches its maximum %d), coalescence to t1 = %.6g "
+             "(N_f first at its least after t0, %d; counts smoothed over %d frames)\n", files[r], fr.f[k0].t_from,
+             sm[k0], fr.f[k1].t_from, sm[k1], 2 * h + 1);
+      /* N_f = c (T_g / E_cb)^(-1/2) over the coalescence frames (Fig. 5.19), and the free
+         exponent of the log-log line as the check */
+      double sxy = 0, sxx = 0, *lt = malloc(sizeof(double) * fr.n), *ln = malloc(sizeof(double) * fr.n);
+      size_t m = 0;
+      for (int k = k0; k <= k1 && lt && ln; k++)
+        if (sm[k] > 0 && tg[k] > 0) {
+          double x = 1 / sqrt(tg[k]);
+          sxy += x * sm[k], sxx += x * x;
+          lt[m] = log(tg[k]), ln[m++] = log(sm[k]);
+        }
+      if (m >= 3) {
+        double c0, c1, c00, c01, c11, ss;
+        gsl_fit_linear(lt, 1, ln, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
+        printf("# %s: coalescence frames %zu: N_f = %.4g (T_g/E_cb)^(-1/2); free fit N_f ~ (T_g/E_cb)^%.4g +- %.2g\n",
+               files[r], m, sxy / sxx, c1, sqrt(c11));
+      } else
+        printf("# %s: coalescence frames %zu: fewer than 3, no fit\n", files[r], m);
+      free(lt), free(ln);
+      /* spacing of adjacent droplets (Fig. 5.16's inset): over --spacing A:B, else over the
+         frames of the smoothing window at t0, the nuclei before they merge (the mean of one
+         frame's gaps is L_x / N_f; their spread is the pattern's) */
+      double a = fr.f[k0 - h < 0 ? 0 : k0 - h].t_from, b = fr.f[k0 + h >= fr.n ? fr.n - 1 : k0 + h].t_from;
+      if (isfinite(o->sp0)) a = o->sp0, b = o->sp1;
+      size_t ng = 0;
+      for (int k = 0; k < fr.n; k++) {
+        if (fr.f[k].t_from < a || fr.f[k].t_from > b) continue;
+        int nd = droplet_centres(&fr.f[k], minw, s, len, pos, &dense);
+        for (int q = 0; q < nd && nd > 1; q++) gaps[ng++] = gap_after(pos, nd, q, lx);
+      }
+      double gm = 0, g2 = 0;
+      for (size_t q = 0; q < ng; q++) gm += gaps[q], g2 += gaps[q] * gaps[q];
+      if (ng) gm /= ng;
+      double sd = ng > 1 ? sqrt(fmax(0, (g2 - ng * gm * gm) / (ng - 1))) : NAN;
+      qsort(gaps, ng, sizeof *gaps, cmp_double);
+      printf("# %s: spacing of adjacent droplets over t in [%.6g, %.6g]: mean %.4g d, sd %.3g, median %.4g, "
+             "%zu gaps\n", files[r], a, b, ng ? gm : NAN, sd, ng ? gaps[ng / 2] : NAN, ng);
+    }
+    free(s), free(len), free(cnt), free(sm), free(tg), free(pos), free(gaps);
+    frames_free(&fr);
+  }
+  return rc;
+}
+
+/* ---- domains (3D): crystalline domains on the lateral plane ------------------------------ */
+
+/* A cell is crystalline where its grains hold more bridges than the fluid's: the coordination
+   z = 2 n_cb / n (bridges per grain) above a cut.  Grains in hexagonal layers touch six in
+   the layer and more in the layers beside it, where the fluid's keep about four (the cells of
+   the Fig. 5.20 system, T_g/E_cb about 0.7 in both phases, give two classes near z = 4.3 and
+   6); the cut is Otsu's over every cell of the run's frames in [--from, --to] (the hot gas of
+   the start has z near 0: leave it out), refused when the classes are less than a factor 1.26
+   apart, or --t-fg Z.  --field chooses another field (bridges, density: crystalline above;
+   temperature: below) and --t-sf X is the temperature cut T_g/E_cb < X.  Domains are the
+   connected components (4-neighbours, periodic) of crystalline cells, of at least
+   --min-cells cells. */
+static int mode_domains(int nf, char **files, const options *o)
+{
+  int rc = 0;
+  printf("file\tt\tperiods\tn_d\tarea_fraction\tmean_area\n");
+  options ot = *o;
+  if (o->t_sf_given) ot.field = FIELD_TEMPERATURE, ot.t_fg = o->t_sf;
+  else if (!o->field_given) ot.field = FIELD_COORDINATION;
+  for (int r = 0; r < nf && !rc; r++) {
+    frames fr;
+    if (need_dim(files[r], 3, "domains needs a 3D run (a lateral plane); droplets is the 2D mode")) return 1;
+    if ((rc = load_frames(files[r], &ot, &fr, 0, NAN))) break;
+    double td = t_driv(files[r]), cell = fr.f[0].lx / fr.f[0].nx * (fr.f[0].ly / fr.f[0].ny);
+    double *lt = malloc(sizeof(double) * fr.n), *ln = malloc(sizeof(double) * fr.n);
+    double a_first = NAN, a_last = NAN;
+    size_t m = 0;
+    for (int k = 0; k < fr.n && lt && ln; k++) {
+      field *fd = &fr.f[k];
+      size_t c = (size_t)fd->nx * fd->ny, solid = 0;
+      for (size_t j = 0; j < c; j++) /* make_mask: crystalline is the side that is not gas */
+        fd->phase[j] = fd->phase[j] != PH_GAS && fd->n[j] > 0 ? PH_SOLID : PH_GAS;
+      component *d = NULL;
+      int nc = components(fd, 1, &d), nd = 0;
+      for (int q = 0; q < nc; q++)
+        if (d[q].cells >= o->min_cells) nd++, solid += (size_t)d[q].cells;
+      free(d);
+      double per = fd->t_from / td, frac = (double)solid / c;
+      printf("%s\t%.10g\t%.6g\t%d\t%.5g\t%.6g\n", files[r], fd->t_from, per, nd, frac,
+             nd ? solid * cell / nd : NAN);
+      if (per > o->xmin && per <= o->xmax && nd > 0) {
+        if (!m) a_first = frac;
+        a_last = frac;
+        lt[m] = log(per), ln[m++] = log(nd);
+      }
+    }
+    if (m >= 3) {
+      double c0, c1, c00, c01, c11, ss;
+      gsl_fit_linear(lt, 1, ln, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
+      /* gsl_fit_linear: the error from the residuals' scatter (the counts' own is not known) */
+      printf("# %s: fit n_d = a (t/T_driv)^beta over %g < t/T_driv <= %g (%zu frames): a = %.4g, beta = %.4g +- %.2g; "
+             "area fraction %.4g -> %.4g\n", files[r], o->xmin, o->xmax, m, exp(c0), c1, sqrt(c11), a_first, a_last);
+    } else
+      printf("# %s: fewer than 3 frames with domains in %g < t/T_driv <= %g: no fit\n", files[r], o->xmin, o->xmax);
+    free(lt), free(ln);
+    frames_free(&fr);
+  }
+  return rc;
+}
+
+/* ---- plug (2D): the dense plug's centre of mass and its mean square displacement --------- */
+
+/* The plug of one frame: the longest dense stretch; its interfaces placed by cut_offset, its
+   centre the mean of the two (Sec. 5.3.3), unwrapped to the image nearest 'prev' (NAN: none).
+   Returns 0 and x, left, right; 1 where the frame has no plug (all gas, or all dense). */
+static int plug_centre(const field *fd, const options *o, double cut, double prev, double *x,
+                       double *left, double *right)
+{
+  int nx = fd->nx, *s = malloc(sizeof(int) * nx), *len = malloc(sizeof(int) * nx);
+  if (!s || !len) {
+    free(s), free(len);
+    return 1;
+  }
+  int m = stretches(fd, s, len), b = -1;
+  for (int q = 0; q < m; q++)
+    if (b < 0 || len[q] > len[b]) b = q;
+  int none = b < 0 || len[b] >= nx;
+  if (!none) {
+    double dx = fd->lx / nx;
+    int a0 = s[b], a1 = s[b] + len[b] - 1; /* first and last dense cell (a1 may pass nx) */
+    double l = (a0 + 0.5 - cut_offset(fd, o, a0, (a0 + nx - 1) % nx, cut)) * dx;
+    double r = (a1 + 0.5 + cut_offset(fd, o, a1 % nx, (a1 + 1) % nx, cut)) * dx;
+    double c = 0.5 * (l + r);
+    if (isfinite(prev)) {
+      double shift = fd->lx * round((prev - c) / fd->lx);
+      c += shift, l += shift, r += shift;
+    }
+    *x = c, *left = l, *right = r;
+  }
+  free(s), free(len);
+  return none;
+}
+
+/* A power law y = D x^alpha through (x, y) by the log-log line; 1 with fewer than 3 points. */
+static int loglog_fit(const double *x, const double *y, size_t n, double *d, double *alpha)
+{
+  double *lx = malloc(sizeof(double) * (n ? n : 1)), *ly = malloc(sizeof(double) * (n ? n : 1));
+  size_t m = 0;
+  for (size_t i = 0; i < n && lx && ly; i++)
+    if (x[i] > 0 && y[i] > 0) lx[m] = log(x[i]), ly[m++] = log(y[i]);
+  int rc = m < 3;
+  if (!rc) {
+    double c0, c1, c00, c01, c11, ss;
+    gsl_fit_linear(lx, 1, ly, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
+    *d = exp(c0), *alpha = c1;
+  }
+  free(lx), free(ly);
+  return rc;
+}
+
+#define PLUG_BOOT 400 /* bootstrap resamples of the runs */
+
+static int mode_plug(int nf, char **files, const options *o)
+{
+  /* tracks[r][k]: run r's unwrapped centre at frame k (NAN: no plug); every run must have
+     the first run's frame times */
+  frames fr;
+  int rc = 0, nt = 0, found = 0;
+  double *tk = NULL, **tr = calloc(nf, sizeof *tr), lx = NAN, td = NAN;
+  if (!tr) return 1;
+  for (int r = 0; r < nf && !rc; r++) {
+    if ((rc = need_dim(files[r], 2, "plug needs a 2D run")) || (rc = load_frames(files[r], o, &fr, 0, NAN))) break;
+    if (r == 0) {
+      nt = fr.n, lx = fr.f[0].lx, td = t_driv(files[0]);
+      tk = malloc(sizeof(double) * nt);
+      for (int k = 0; tk && k < nt; k++) tk[k] = fr.f[k].t_from;
+    } else if (fr.n != nt || fabs(fr.f[0].lx - lx) > 1e-9 * lx ||
+               fabs(fr.f[nt - 1].t_from - tk[nt - 1]) > 1e-6 * fabs(tk[nt - 1]) + 1e-9) {
+      fprintf(stderr, PROG ": %s: %d frames to t = %g in a box of %g d, where %s has %d to t = %g in %g d: "
+              "the runs of one plug MSD must share box and frames\n", files[r], fr.n, fr.f[fr.n - 1].t_from,
+              fr.f[0].lx, files[0], nt, tk[nt - 1], lx);
+      rc = 1;
+    }
+    if (!rc && !(tr[r] = malloc(sizeof(double) * nt))) rc = 1;
+    double prev = NAN, l, rr;
+    int jumps = 0, missing = 0;
+    for (int k = 0; k < nt && !rc; k++) {
+      double x;
+      if (plug_centre(&fr.f[k], o, fr.cut, prev, &x, &l, &rr)) {
+        tr[r][k] = NAN, missing++;
+        continue;
+      }
+      if (isfinite(prev) && fabs(x - prev) > 0.25 * lx) jumps++;
+      tr[r][k] = prev = x;
+      if (o->tracks)
+        printf("%s%s\t%.10g\t%.6g\t%.6g\t%.6g\t%.6g\n", r + k == 0 ? "file\tt\tperiods\tx\tleft\tright\n" : "",
+               files[r], tk[k], tk[k] / td, x, l, rr);
+    }
+    found += nt - missing;
+    if (!rc && (jumps || missing))
+      fprintf(stderr, PROG ": %s: %d frames without a plug, %d jumps of the centre by more than L_x/4\n",
+              files[r], missing, jumps);
+    frames_free(&fr);
+  }
+  if (rc || o->tracks) {
+    for (int r = 0; r < nf; r++) free(tr[r]);
+    free(tr), free(tk);
+    return rc;
+  }
+  /* the origin: each run's centre at the first frame (the frames start at --from) */
+  double *msd = calloc(nt, sizeof(double)), *err = calloc(nt, sizeof(double)), *px = malloc(sizeof(double) * nt);
+  int *cnt = calloc(nt, sizeof(int)), *use = malloc(sizeof(int) * nf);
+  double *bm = malloc(sizeof(double) * nt);
+  int *bc = malloc(sizeof(int) * nt);
+  if (!msd || !err || !px || !cnt || !use || !bm || !bc) rc = 1;
+  int nuse = 0;
+  for (int r = 0; r < nf && !rc; r++)
+    if (isfinite(tr[r][0])) use[nuse++] = r;
+    else fprintf(stderr, PROG ": %s: no plug in the first frame (t = %g): left out of the MSD\n", files[r], tk[0]);
+  if (!rc && nuse < 2) {
+    fprintf(stderr, PROG ": %d run(s) with a plug in the first frame: the MSD needs at least 2\n", nuse);
+    rc = 1;
+  }
+  for (int k = 0; k < nt && !rc; k++) {
+    double s = 0, s2 = 0;
+    for (int q = 0; q < nuse; q++) {
+      double d = tr[use[q]][k] - tr[use[q]][0];
+      if (!isfinite(d)) continue;
+      s += d * d, s2 += d * d * d * d, cnt[k]++;
+    }
+    msd[k] = cnt[k] ? s / cnt[k] : NAN;
+    err[k] = cnt[k] > 1 ? sqrt(fmax(0, (s2 / cnt[k] - msd[k] * msd[k]) / (cnt[k] - 1))) : NAN;
+    px[k] = (tk[k] - tk[0]) / td;
+  }
+  if (!rc) {
+    printf("# a plug in %d of %d frames (%d runs x %d frames)\n", found, nf * nt, nf, nt);
+    printf("t\tperiods\tmsd\tmsd_over_lx2\terr\tn\n");
+    for (int k = 0; k < nt; k++)
+      printf("%.10g\t%.6g\t%.6g\t%.6g\t%.3g\t%d\n", tk[k], px[k], msd[k], msd[k] / (lx * lx), err[k] / (lx * lx), cnt[k]);
+    /* the fit sigma_rw / L_x^2 = D_x (t/T_driv)^alpha over the window; its errors from the
+       runs resampled with replacement (the MSD's points share the runs: their own error bars
+       are not independent) */
+    size_t n = 0;
+    double *x = malloc(sizeof(double) * nt), *y = malloc(sizeof(double) * nt), d, alpha;
+    for (int k = 0; x && y && k < nt; k++)
+      if (px[k] > o->xmin && px[k] <= o->xmax && cnt[k] > 0) x[n] = px[k], y[n++] = msd[k] / (lx * lx);
+    if (!x || !y || loglog_fit(x, y, n, &d, &alpha)) {
+      printf("# fewer than 3 frames with a displacement in %g < t/T_driv <= %g: no fit\n", o->xmin, o->xmax);
+    } else {
+      gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
+      gsl_rng_set(g, 1);
+      double sa = 0, sa2 = 0, sd = 0, sd2 = 0;
+      int nb = 0;
+      for (int b = 0; b < PLUG_BOOT && g; b++) {
+        for (int k = 0; k < nt; k++) bm[k] = 0, bc[k] = 0;
+        for (int q = 0; q < nuse; q++) {
+          int rr = use[gsl_rng_uniform_int(g, nuse)];
+          for (int k = 0; k < nt; k++) {
+            double dd = tr[rr][k] - tr[rr][0];
+            if (isfinite(dd)) bm[k] += dd * dd, bc[k]++;
+          }
+        }
+        size_t m = 0;
+        for (int k = 0; k < nt; k++)
+          if (px[k] > o->xmin && px[k] <= o->xmax && bc[k] > 0) x[m] = px[k], y[m++] = bm[k] / bc[k] / (lx * lx);
+        double bd, ba;
+        if (loglog_fit(x, y, m, &bd, &ba)) continue;
+        sa += ba, sa2 += ba * ba, sd += log10(bd), sd2 += log10(bd) * log10(bd), nb++;
+      }
+      gsl_rng_free(g);
+      double ea = nb > 1 ? sqrt(fmax(0, (sa2 - sa * sa / nb) / (nb - 1))) : NAN;
+      double el = nb > 1 ? sqrt(fmax(0, (sd2 - sd * sd / nb) / (nb - 1))) : NAN;
+      printf("# fit msd/L_x^2 = D_x (t/T_driv)^alpha over %g < t/T_driv <= %g (%zu frames, %d runs): "
+             "D_x = %.4g (log10 %.4g +- %.2g), alpha = %.4g +- %.2g (bootstrap over the runs, %d resamples)\n",
+             o->xmin, o->xmax, n, nuse, d, log10(d), el, alpha, ea, nb);
+    }
+    free(x), free(y);
+  }
+  free(msd), free(err), free(px), free(cnt), free(use), free(bm), free(bc);
+  for (int r = 0; r < nf; r++) free(tr[r]);
+  free(tr), free(tk);
+  return rc;
+}
+
 /* ---- main --------------------------------------------------------------------------------- */
 
 static int pair(const char *opt, const char *s, double *a, double *b)
@@ -1315,13 +1881,14 @@ int main(int argc, char **argv)
   const char *mode = argv[1];
   options o = {.field = FIELD_TEMPERATURE, .source = SOURCE_AUTO, .t0 = -INFINITY, .t1 = INFINITY,
                .window = 0, .t_fg = NAN, .t_sf = T_SF_DEFAULT, .ef = NAN, .eg = NAN, .fsmax = NAN,
-               .sigma = NAN, .xmin = 0, .xmax = 1};
+               .sigma = NAN, .xmin = 0, .xmax = NAN, .min_width = 0, .min_cells = 2, .sp0 = NAN,
+               .sp1 = NAN, .smooth = 5};
   char *files[argc]; /* the inputs among the arguments: at most argc - 2 */
   int nf = 0;
   for (int i = 2; i < argc; i++) {
     const char *a = argv[i];
     const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-    int val = a[0] == '-' && a[1] == '-' && strcmp(a, "--help");
+    int val = a[0] == '-' && a[1] == '-' && strcmp(a, "--help") && strcmp(a, "--tracks");
     if (val && !v) {
       fprintf(stderr, PROG ": option %s needs a value\n", a);
       return 2;
@@ -1339,10 +1906,12 @@ int main(int argc, char **argv)
       if (!strcmp(v, "temperature")) o.field = FIELD_TEMPERATURE;
       else if (!strcmp(v, "density")) o.field = FIELD_DENSITY;
       else if (!strcmp(v, "bridges")) o.field = FIELD_BRIDGES;
+      else if (!strcmp(v, "coordination")) o.field = FIELD_COORDINATION;
       else {
-        fprintf(stderr, PROG ": option --field: '%s' is not temperature, density or bridges\n", v);
+        fprintf(stderr, PROG ": option --field: '%s' is not temperature, density, bridges or coordination\n", v);
         return 2;
       }
+      o.field_given = 1;
     } else if (!strcmp(a, "--bins")) {
       long nx, ny = 0;
       char buf[64];
@@ -1366,7 +1935,23 @@ int main(int argc, char **argv)
       }
     }
     else if (!strcmp(a, "--t-fg")) { if (wg_arg_double(a, v, &o.t_fg)) return 2; }
-    else if (!strcmp(a, "--t-sf")) { if (wg_arg_double(a, v, &o.t_sf)) return 2; }
+    else if (!strcmp(a, "--t-sf")) {
+      if (wg_arg_double(a, v, &o.t_sf)) return 2;
+      o.t_sf_given = 1;
+    }
+    else if (!strcmp(a, "--min-width")) { if (wg_arg_double(a, v, &o.min_width)) return 2; }
+    else if (!strcmp(a, "--min-cells")) { if (wg_arg_long(a, v, &o.min_cells)) return 2; }
+    else if (!strcmp(a, "--spacing")) { if (pair(a, v, &o.sp0, &o.sp1)) return 2; }
+    else if (!strcmp(a, "--tracks")) { o.tracks = 1; continue; }
+    else if (!strcmp(a, "--smooth")) {
+      long k;
+      if (wg_arg_long(a, v, &k)) return 2;
+      if (k < 1 || k > 63 || k % 2 == 0) {
+        fprintf(stderr, PROG ": option --smooth: an odd number of frames from 1 to 63\n");
+        return 2;
+      }
+      o.smooth = (int)k;
+    }
     else if (!strcmp(a, "--fsmax")) { if (wg_arg_double(a, v, &o.fsmax)) return 2; }
     else if (!strcmp(a, "--sigma")) { if (wg_arg_double(a, v, &o.sigma)) return 2; }
     else if (!strcmp(a, "--xmin")) { if (wg_arg_double(a, v, &o.xmin)) return 2; }
@@ -1403,6 +1988,7 @@ int main(int argc, char **argv)
     fprintf(stderr, PROG ": %s: no input file\n", mode);
     return 2;
   }
+  if (!isfinite(o.xmax)) o.xmax = strcmp(mode, "powerfit") ? INFINITY : 1;
   wg_h5_quiet();
   int rc;
   if (!strcmp(mode, "ag")) rc = mode_ag(nf, files, &o);
@@ -1410,6 +1996,9 @@ int main(int argc, char **argv)
   else if (!strcmp(mode, "strip")) rc = mode_strip(nf, files, &o);
   else if (!strcmp(mode, "relax")) rc = mode_relax(nf, files, &o);
   else if (!strcmp(mode, "spacetime")) rc = mode_spacetime(nf, files, &o);
+  else if (!strcmp(mode, "droplets")) rc = mode_droplets(nf, files, &o);
+  else if (!strcmp(mode, "domains")) rc = mode_domains(nf, files, &o);
+  else if (!strcmp(mode, "plug")) rc = mode_plug(nf, files, &o);
   else if (!strcmp(mode, "powerfit")) {
     if (nf != 1) {
       fprintf(stderr, PROG ": powerfit takes one table\n");
@@ -1417,7 +2006,7 @@ int main(int argc, char **argv)
     }
     rc = mode_powerfit(files[0], &o);
   } else {
-    fprintf(stderr, PROG ": unknown mode '%s' (ag, field, strip, relax, spacetime, powerfit)\n", mode);
+    fprintf(stderr, PROG ": unknown mode '%s' (ag, field, strip, relax, spacetime, droplets, domains, plug, powerfit)\n", mode);
     rc = 2;
   }
   return rc;

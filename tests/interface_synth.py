@@ -14,6 +14,17 @@ Kinds (positions and velocities written as wetgran-run's layout, enough for the 
   strip3d     a 3D run, box L x L x 8 (L = 96): a fluid strip along x between
               y = c -/+ w/2 + a cos(2 pi x / L) (c 48, w 36, a 6), gas elsewhere; with
               frames = K and tau = T the amplitude of frame k (time 10 k) is a exp(-10 k / T)
+  plugwalk    a 2D run with lateral maps (lx = 400, nx = 4000 cells of 0.1 d): a plug of width
+              w (100) whose centre moves by sign * a * k^(h) (a 2, h 0.65, sign +1) from c0 (350) over
+              frames k = 0 .. frames - 1 (60) at times k * T_driv (so crossing x = 400); dense
+              cells: n 5, T_g 3 E_cb; gas: n 0.5, T_g 50 E_cb
+  droplets2d  a 2D run with lateral maps (lx = 1000, 1000 cells): frame k holds counts[k]
+              (a comma list) equally spaced droplets 20 d wide (n 5, gas 0.5), T_g of every
+              cell (c / N)^2 E_cb (c 8): N_f = c (T_g/E_cb)^(-1/2) exactly; times 10 k
+  domains3d   a 3D run with lateral maps, 64 x 64 cells on L = 64: frames at t = T_driv * 8^k
+              (k < 4) holding 64, 32, 16, 8 crystalline rectangles (T_g 1e-3 E_cb, 6 bridges
+              per grain; the fluid 1 E_cb, 4) of 4, 8, 16, 32 cells, one across the periodic
+              corner: N_d = 64 (t / T_driv)^(-1/3), area fraction 1/16 in every frame
 Every particle field is on a lattice of spacing 'h' (fluid) with speeds from a fixed seed.
 """
 import sys
@@ -82,8 +93,61 @@ def layered(gas_mask, X, Y, z_height, dim, frames):
     return out
 
 
+def tdriv(params):
+    """wetgran-run's driving period from the header's gamma, estar, e_cb (g = 1)."""
+    return 2 * np.pi * np.sqrt(2 * params.get("estar", 10.0) * E_CB) / params.get("gamma", 8.0)
+
+
+def maps(f, times, dens, bridges, temp):
+    """/observables/maps: frames x [ny x] nx arrays; temp in units of E_cb."""
+    for name, val in (("number_density", dens), ("bridge_density", bridges),
+                      ("temperature", np.asarray(temp) * E_CB)):
+        grp = f.create_group("observables/maps/" + name)
+        grp.create_dataset("value", data=np.asarray(val, dtype=float))
+        grp.create_dataset("time", data=np.asarray(times, dtype=float))
+        grp.create_dataset("step", data=np.arange(len(times)))
+
+
 with h5py.File(out, "w") as f:
-    if kind == "profile2d":
+    if kind == "plugwalk":
+        header(f, [400.0, 9.0], {})
+        nx, w, c0 = 4000, g("w", 100), g("c0", 350)
+        x = (np.arange(nx) + 0.5) * 0.1
+        frames = int(g("frames", 60))
+        centre = [c0 + g("sign", 1) * g("a", 2) * k ** g("h", 0.65) for k in range(frames)]
+        dense = np.array([np.abs((x - c + 200) % 400 - 200) < w / 2 for c in centre])
+        maps(f, np.arange(frames) * tdriv({}), np.where(dense, 5.0, 0.5), np.where(dense, 3.0, 0.0),
+             np.where(dense, 3.0, 50.0))
+    elif kind == "droplets2d":
+        header(f, [1000.0, 9.0], {})
+        counts = [int(c) for c in kv.get("counts", "2,4,8,8,8,7,6,5,4,3,2,2,2,4,4,4").split(",")]
+        x = np.arange(1000) + 0.5
+        c = g("c", 8)
+        dens, temp = [], []
+        for n in counts:
+            centres = (np.arange(n) + 0.5) * 1000 / n
+            d = np.min(np.abs((x[:, None] - centres[None, :] + 500) % 1000 - 500), axis=1) < 10
+            dens.append(np.where(d, 5.0, 0.5))
+            temp.append(np.full(1000, (c / n) ** 2))
+        maps(f, np.arange(len(counts)) * 10.0, dens, np.array(dens) - 0.5, temp)
+    elif kind == "domains3d":
+        header(f, [64.0, 64.0, 8.0], {})
+        # (h, w, spacing along y, along x) per frame
+        sizes = [(2, 2, 8, 8), (2, 4, 16, 8), (4, 4, 16, 16), (4, 8, 32, 16)]
+        dens, temp = [], []
+        for h, w, spy, spx in sizes:
+            t = np.ones((64, 64))
+            for y0 in range(-1, 63, spy):  # the first row starts at -1: across the corner
+                for x0 in range(-1, 63, spx):
+                    for yy in range(y0, y0 + h):
+                        for xx in range(x0, x0 + w):
+                            t[yy % 64, xx % 64] = 1e-3
+            temp.append(t)
+            dens.append(np.full((64, 64), 3.0))
+        # coordination 2 n_cb / n: 6 in the crystal, 4 in the fluid
+        maps(f, [tdriv({}) * 8 ** k for k in range(4)], dens,
+             np.where(np.array(temp) < 0.01, 9.0, 6.0), temp)
+    elif kind == "profile2d":
         header(f, [100.0, 9.0], {"estar": g("estar", 10)})
         x = np.arange(100) + 0.5
         g0, g1 = g("g0", 20), g("g1", 60)

@@ -185,4 +185,69 @@ check "--ends without ':': exit 2" test $rc -eq 2
 "$tool" powerfit --x nope --y y "$tmp/pow.tsv" 2> "$tmp/e8"; rc=$?
 check "powerfit: a missing column is named with file and line" \
   bash -c "[ $rc -eq 1 ] && grep -q \"pow.tsv:1: no column 'nope'\" '$tmp/e8'"
+# (9) coarsening modes on synthetic maps with known answers.
+# plug: two runs whose plugs move by +/- 2 k^0.65 d at frame k (t = k T_driv), one across
+# x = 400: the MSD is 4 k^1.3 d^2 exactly, up to the 0.1 d cells
+$synth plugwalk "$tmp/w1.h5" && $synth plugwalk "$tmp/w2.h5" sign=-1
+"$tool" plug "$tmp/w1.h5" "$tmp/w2.h5" > "$tmp/w.out"
+fitline=$(grep '^# fit msd' "$tmp/w.out")
+alpha=$(sed -n 's/.*alpha = \([^ ]*\) .*/\1/p' <<< "$fitline"); dxf=$(sed -n 's/.*D_x = \([^ ]*\) .*/\1/p' <<< "$fitline")
+check "plug: alpha = 1.3 ($alpha) and D_x = 4/400^2 = 2.5e-5 ($dxf) from |x(t) - x(0)| = 2 (t/T_driv)^0.65" \
+  bash -c "near '$alpha' 1.3 0.005 && near '$dxf' 2.5e-5 2e-7"
+check "plug: the MSD at lag 59 periods is 4 * 59^1.3 d^2 within 0.1 d of displacement" \
+  bash -c "awk -F'\t' '\$2 == 59 { m = \$3 } END { e = 4 * 59 ^ 1.3; d = 2 * sqrt(e); exit !(m - e < 0.1 * d + 0.01 && e - m < 0.1 * d + 0.01) }' '$tmp/w.out'"
+"$tool" plug "$tmp/w1.h5" --tracks > "$tmp/wt.out"
+check "--help names the coarsening modes" bash -c "'$tool' --help | grep -q '^  droplets' && '$tool' --help | grep -q '^  domains' && '$tool' --help | grep -q '^  plug'"
+check "plug --tracks: the centre is unwrapped across x = 400 (350 + 2 * 59^0.65) and the width stays 100 d" \
+  bash -c "awk -F'\t' '!/^#/ && \$1 != \"file\" { x = \$4; w = \$6 - \$5; if ((w - 100) ^ 2 > 0.04) bad++ } END { e = 350 + 2 * 59 ^ 0.65; exit !(!bad && (x - e) ^ 2 < 0.01) }' '$tmp/wt.out'"
+"$tool" plug --xmin 10 --xmax 30 "$tmp/w1.h5" "$tmp/w2.h5" | grep -q '^# fit .* over 10 < t/T_driv <= 30 (20 frames, 2 runs)'
+check "plug: --xmin/--xmax set the fit window, which the fit line reports" test $? -eq 0
+$synth plugwalk "$tmp/w3.h5" frames=30
+"$tool" plug "$tmp/w1.h5" "$tmp/w3.h5" > /dev/null 2> "$tmp/we"; rc=$?
+check "plug: runs with other frames are refused (exit 1), naming both files" \
+  bash -c "[ $rc -eq 1 ] && grep -q 'w3.h5: 30 frames.*w1.h5 has 60' '$tmp/we'"
+"$tool" plug "$tmp/p.h5" > /dev/null 2> "$tmp/we2"; rc=$?
+check "plug: a run without maps or snapshots frames is refused (exit 1)" test $rc -eq 1
+# droplets: counts 2,4,8,8,8,7,...,2,2,2,4,4,4 with T_g = (8/N)^2 E_cb: nucleation to the
+# maximum at t = 20, coalescence to t = 100, N_f = 8 (T_g/E_cb)^(-1/2) with exponent -1/2
+$synth droplets2d "$tmp/dr.h5"
+"$tool" droplets --field density --smooth 1 "$tmp/dr.h5" > "$tmp/dr.out"
+check "droplets: N_f per frame as built (2 4 8 8 8 7 6 5 4 3 2 2 2 4 4 4)" \
+  test "$(awk -F'\t' '!/^#/ && $1 != "file" { printf "%s ", $4 }' "$tmp/dr.out")" = "2 4 8 8 8 7 6 5 4 3 2 2 2 4 4 4 "
+check "droplets: the regimes: nucleation to t0 = 20 (maximum 8), coalescence to t1 = 100 (first N_f = 2)" \
+  grep -q 'nucleation to t0 = 20 (N_f reaches its maximum 8), coalescence to t1 = 100 ' "$tmp/dr.out"
+check "droplets: N_f = 8 (T_g/E_cb)^(-1/2) over the coalescence, free exponent -0.5" \
+  grep -q 'N_f = 8 (T_g/E_cb)^(-1/2); free fit N_f ~ (T_g/E_cb)^-0.5 ' "$tmp/dr.out"
+check "droplets: equally spaced, mean spacing L/N (8 droplets: 125 d) and positions" \
+  bash -c "awk -F'\t' '\$2 == 20 { exit !(\$8 == 125 && \$9 ~ /^62.5,187.5,/) }' '$tmp/dr.out'"
+"$tool" droplets --field density --smooth 1 --spacing 60:80 "$tmp/dr.h5" | grep -q 'spacing of adjacent droplets over t in \[60, 80\]: mean 200 d, sd 34.5, median 200, 15 gaps'
+check "droplets: --spacing A:B pools the gaps of the frames in [A, B] (6, 5, 4 droplets: 15 gaps, mean 200 d)" test $? -eq 0
+"$tool" droplets "$tmp/w3.h5" --field density --min-width 150 | awk -F'\t' '!/^#/ && $1 != "file" && $4 != 0 { bad++ } END { exit bad > 0 }'
+check "droplets: --min-width 150 drops a 100 d plug" test $? -eq 0
+# one frame's flicker (8 8 3 8 8) is smoothed away by the running median of 5, not of 1
+$synth droplets2d "$tmp/df.h5" counts=2,4,8,8,3,8,8,6,4,2,2,2
+"$tool" droplets --field density "$tmp/df.h5" > "$tmp/df.out"
+check "droplets --smooth 5 (default): a one-frame dip is smoothed away (n_f 3, n_f_smooth 8); t0 = 30, t1 = 90" \
+  bash -c "grep -q 'nucleation to t0 = 30 (N_f reaches its maximum 8), coalescence to t1 = 90 (N_f first at its least after t0, 2; counts smoothed over 5 frames)' '$tmp/df.out' && awk -F'\t' '\$2 == 40 && !(\$4 == 3 && \$5 == 8) { bad++ } END { exit bad > 0 }' '$tmp/df.out'"
+"$tool" droplets --field density --smooth 4 "$tmp/df.h5" > /dev/null 2>&1; rc=$?
+check "droplets --smooth 4 (even): exit 2" test $rc -eq 2
+# domains: 64, 32, 16, 8 crystalline rectangles at t/T_driv = 1, 8, 64, 512, one across the
+# periodic corner: N_d = 64 (t/T_driv)^(-1/3), the area fraction 1/16 throughout
+$synth domains3d "$tmp/dm.h5"
+"$tool" domains "$tmp/dm.h5" > "$tmp/dm.out"
+check "domains: N_d per frame 64 32 16 8 (the corner's rectangle is one domain)" \
+  test "$(awk -F'\t' '!/^#/ && $1 != "file" { printf "%s ", $4 }' "$tmp/dm.out")" = "64 32 16 8 "
+check "domains: the area fraction is 1/16 in every frame, mean areas 4 8 16 32 d^2" \
+  test "$(awk -F'\t' '!/^#/ && $1 != "file" { printf "%s/%s ", $5, $6 }' "$tmp/dm.out")" = "0.0625/4 0.0625/8 0.0625/16 0.0625/32 "
+check "domains: the fit gives beta = -1/3, a = 64" grep -q 'a = 64, beta = -0.3333 ' "$tmp/dm.out"
+"$tool" domains --min-cells 5 "$tmp/dm.h5" | grep -q 'fit n_d = a (t/T_driv)^beta over 0 < t/T_driv <= inf (3 frames)'
+check "domains: --min-cells 5 leaves out the 4-cell domains of the first frame" test $? -eq 0
+check "domains: the default cut is on the coordination (Otsu's, classes 4 and 6 bridges per grain)" \
+  grep -q '^# threshold coordination = 4.89898: .* class means 4 and 6 ' "$tmp/dm.out"
+"$tool" domains --t-sf 0.01 "$tmp/dm.h5" | awk -F'\t' '!/^#/ && $1 != "file" { printf "%s ", $4 }' > "$tmp/dmt.out"
+check "domains --t-sf 0.01: the temperature cut finds the same 64 32 16 8" test "$(cat "$tmp/dmt.out")" = "64 32 16 8 "
+"$tool" domains --t-sf 1e-4 "$tmp/dm.h5" | awk -F'\t' '!/^#/ && $1 != "file" && $4 != 0 { bad++ } END { exit bad > 0 }'
+check "domains: --t-sf below the crystal's T_g: no domains" test $? -eq 0
+"$tool" domains "$tmp/dr.h5" > /dev/null 2> "$tmp/de"; rc=$?
+check "domains: a 2D run is refused (exit 1), pointing to droplets" bash -c "[ $rc -eq 1 ] && grep -q 'dr.h5: domains needs a 3D run' '$tmp/de'"
 summary
