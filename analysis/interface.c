@@ -1365,8 +1365,9 @@ static void frames_free(frames *fr)
   fr->n = 0;
 }
 
-static int load_frames(const char *file, const options *o, frames *fr, int cut_given, double cut)
+static int load_frames(const char *file, const options *o, frames *fr)
 {
+  double cut = NAN;
   memset(fr, 0, sizeof *fr);
   double *t = NULL;
   hsize_t nt = 0;
@@ -1417,8 +1418,7 @@ static int load_frames(const char *file, const options *o, frames *fr, int cut_g
     fprintf(stderr, PROG ": %s: no frame in [--from, --to]\n", file);
     rc = 1;
   }
-  if (!rc && !cut_given) rc = pooled_cut(fr->f, fr->n, o, &cut);
-  else if (!rc && isfinite(o->t_fg)) cut = log10(o->t_fg);
+  if (!rc) rc = pooled_cut(fr->f, fr->n, o, &cut);
   fr->cut = cut;
   for (int k = 0; k < fr->n && !rc; k++) make_mask(&fr->f[k], o, cut);
   if (rc) frames_free(fr);
@@ -1535,7 +1535,7 @@ static int mode_droplets(int nf, char **files, const options *o)
   for (int r = 0; r < nf && !rc; r++) {
     frames fr;
     if (need_dim(files[r], 2, "droplets needs a 2D run (domains is the 3D mode)")) return 1;
-    if ((rc = load_frames(files[r], o, &fr, 0, NAN))) break;
+    if ((rc = load_frames(files[r], o, &fr))) break;
     int nx = fr.f[0].nx, minw = (int)ceil(o->min_width / (fr.f[0].lx / nx) - 1e-9), h = o->smooth / 2;
     if (minw < 1) minw = 1;
     double td = t_driv(files[r]), lx = fr.f[0].lx, dense;
@@ -1647,7 +1647,7 @@ static int mode_domains(int nf, char **files, const options *o)
   for (int r = 0; r < nf && !rc; r++) {
     frames fr;
     if (need_dim(files[r], 3, "domains needs a 3D run (a lateral plane); droplets is the 2D mode")) return 1;
-    if ((rc = load_frames(files[r], &ot, &fr, 0, NAN))) break;
+    if ((rc = load_frames(files[r], &ot, &fr))) break;
     double td = t_driv(files[r]), cell = fr.f[0].lx / fr.f[0].nx * (fr.f[0].ly / fr.f[0].ny);
     double *lt = malloc(sizeof(double) * fr.n), *ln = malloc(sizeof(double) * fr.n);
     double a_first = NAN, a_last = NAN;
@@ -1746,7 +1746,7 @@ static int mode_plug(int nf, char **files, const options *o)
   double *tk = NULL, **tr = calloc(nf, sizeof *tr), lx = NAN, td = NAN;
   if (!tr) return 1;
   for (int r = 0; r < nf && !rc; r++) {
-    if ((rc = need_dim(files[r], 2, "plug needs a 2D run")) || (rc = load_frames(files[r], o, &fr, 0, NAN))) break;
+    if ((rc = need_dim(files[r], 2, "plug needs a 2D run")) || (rc = load_frames(files[r], o, &fr))) break;
     if (r == 0) {
       nt = fr.n, lx = fr.f[0].lx, td = t_driv(files[0]);
       tk = malloc(sizeof(double) * nt);
