@@ -121,8 +121,8 @@ static int usage(FILE *o, int rc)
     "                      than that are filled) n_f_smooth dense_fraction tg_ecb (mean\n"
     "                      T_g/E_cb) mean_spacing positions; then per run (comment lines) the\n"
     "                      regimes (Sec. 5.3.1: on N_f's running median over --smooth K frames\n"
-    "                      (5): nucleation to its maximum t0, coalescence until it first reaches\n"
-    "                      its least value after t0, t1), the fit (smoothed N_f)\n"
+    "                      (5): nucleation to its maximum t0, coalescence while it does not rise\n"
+    "                      above its running minimum, to t1), the fit (smoothed N_f)\n"
     "                      N_f = c (T_g/E_cb)^(-1/2) over [t0, t1] with the free exponent beside it\n"
     "                      (Fig. 5.19), and the spacing of adjacent droplets over the smoothing\n"
     "                      window at t0 or --spacing A:B (mean, sd, median; Fig. 5.16's inset)\n"
@@ -1571,16 +1571,17 @@ static int mode_droplets(int nf, char **files, const options *o)
     }
     if (!rc) {
       /* the regimes (Sec. 5.3.1) on the smoothed count: nucleation while N_f grows, to its
-         first maximum t0; coalescence until it first reaches its least value after t0, t1
-         (later, drops split and re-nucleate: the reordering regimes) */
+         first maximum t0; coalescence while it does not rise above its running minimum, to
+         t1, the last frame before it first does (a gas bubble splits a drop: the reordering
+         regime begins) */
       int k0 = 0, k1;
       for (int k = 1; k < fr.n; k++)
         if (sm[k] > sm[k0]) k0 = k;
-      k1 = k0;
-      for (int k = k0 + 1; k < fr.n; k++)
-        if (sm[k] < sm[k1]) k1 = k;
+      int low = sm[k0];
+      for (k1 = k0 + 1; k1 < fr.n && sm[k1] <= low; k1++) low = sm[k1];
+      k1--;
       printf("# %s: nucleation to t0 = %.6g (N_f reaches its maximum %d), coalescence to t1 = %.6g "
-             "(N_f first at its least after t0, %d; counts smoothed over %d frames)\n", files[r], fr.f[k0].t_from,
+             "(N_f %d, rising after; counts smoothed over %d frames)\n", files[r], fr.f[k0].t_from,
              sm[k0], fr.f[k1].t_from, sm[k1], 2 * h + 1);
       /* N_f = c (T_g / E_cb)^(-1/2) over the coalescence frames (Fig. 5.19), and the free
          exponent of the log-log line as the check */

@@ -11,7 +11,7 @@ FNR == 1 { f++ }
   match($0, /maximum [0-9]*/); nmax = substr($0, RSTART + 8, RLENGTH - 8); add("n_f_max", nmax)
   match($0, /t1 = [^ ]*/); t1 = substr($0, RSTART + 5, RLENGTH - 5) + 0; add("t1", t1)
   add("tg_rise", tg[f, t1] / tg[f, t0]); add("tg_rises", tg[f, t1] > tg[f, t0])
-  match($0, /least after t0, [0-9]*/); add("coalescence_ratio", substr($0, RSTART + 16, RLENGTH - 16) / nmax)
+  match($0, /t1 = [^ ]* \(N_f [0-9]*/); split(substr($0, RSTART, RLENGTH), w, " "); add("coalescence_ratio", w[5] / nmax)
 }
 /^# .*coalescence frames .*N_f = / {
   match($0, /N_f = [^ ]*/); add("nf_c", substr($0, RSTART + 6, RLENGTH - 6))
