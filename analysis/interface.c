@@ -1505,6 +1505,25 @@ static double cut_offset(const field *fd, const options *o, int a, int b, double
   return u < 0 ? 0 : u > 1 ? 1 : u;
 }
 
+/* A power law y = D x^alpha through the points with x, y > 0, by the log-log line (GSL);
+   *err: alpha's error from the line's residuals (NULL: not wanted).  1 with fewer than 3. */
+static int loglog_fit(const double *x, const double *y, size_t n, double *d, double *alpha, double *err)
+{
+  double *lx = malloc(sizeof(double) * (n ? n : 1)), *ly = malloc(sizeof(double) * (n ? n : 1));
+  size_t m = 0;
+  for (size_t i = 0; i < n && lx && ly; i++)
+    if (x[i] > 0 && y[i] > 0) lx[m] = log(x[i]), ly[m++] = log(y[i]);
+  int rc = m < 3;
+  if (!rc) {
+    double c0, c1, c00, c01, c11, ss;
+    gsl_fit_linear(lx, 1, ly, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
+    *d = exp(c0), *alpha = c1;
+    if (err) *err = sqrt(c11);
+  }
+  free(lx), free(ly);
+  return rc;
+}
+
 /* ---- droplets (2D): N_f(t), positions, spacing; the coalescence regime ----------------- */
 
 /* The droplets of a 2D frame (gaps narrower than minw cells filled first): their centres,
@@ -1538,19 +1557,20 @@ static int mode_droplets(int nf, char **files, const options *o)
     if ((rc = load_frames(files[r], o, &fr))) break;
     int nx = fr.f[0].nx, minw = (int)ceil(o->min_width / (fr.f[0].lx / nx) - 1e-9), h = o->smooth / 2;
     if (minw < 1) minw = 1;
-    double td = t_driv(files[r]), lx = fr.f[0].lx, dense;
+    double td = t_driv(files[r]), lx = fr.f[0].lx;
     int *s = malloc(sizeof(int) * nx), *len = malloc(sizeof(int) * nx);
     int *cnt = malloc(sizeof(int) * fr.n), *sm = malloc(sizeof(int) * fr.n);
-    double *tg = malloc(sizeof(double) * fr.n), *pos = malloc(sizeof(double) * nx);
-    double *gaps = malloc(sizeof(double) * (size_t)nx * fr.n);
-    if (!s || !len || !cnt || !sm || !tg || !pos || !gaps) rc = 1;
+    /* pos + k nx: frame k's droplet centres, found once */
+    double *tg = malloc(sizeof(double) * fr.n), *dense = malloc(sizeof(double) * fr.n);
+    double *pos = malloc(sizeof(double) * (size_t)nx * fr.n), *gaps = malloc(sizeof(double) * (size_t)nx * fr.n);
+    if (!s || !len || !cnt || !sm || !tg || !dense || !pos || !gaps) rc = 1;
     for (int k = 0; k < fr.n && !rc; k++) {
       const field *fd = &fr.f[k];
       double nsum = 0, tsum = 0;
       for (int i = 0; i < nx; i++)
         if (fd->n[i] > 0 && isfinite(fd->tg[i])) nsum += fd->n[i], tsum += fd->n[i] * fd->tg[i];
       tg[k] = nsum > 0 ? tsum / nsum / fd->e_cb : NAN;
-      cnt[k] = droplet_centres(&fr.f[k], minw, s, len, pos, &dense);
+      cnt[k] = droplet_centres(&fr.f[k], minw, s, len, pos + (size_t)k * nx, &dense[k]);
     }
     /* the count smoothed against flicker: running median of --smooth frames, the window
        shrunk symmetrically at the ends */
@@ -1563,10 +1583,11 @@ static int mode_droplets(int nf, char **files, const options *o)
     }
     for (int k = 0; k < fr.n && !rc; k++) {
       const field *fd = &fr.f[k];
-      int nd = droplet_centres(&fr.f[k], minw, s, len, pos, &dense);
-      printf("%s\t%.10g\t%.6g\t%d\t%d\t%.4g\t%.6g\t%.6g\t", files[r], fd->t_from, fd->t_from / td, nd, sm[k], dense,
+      int nd = cnt[k];
+      const double *p = pos + (size_t)k * nx;
+      printf("%s\t%.10g\t%.6g\t%d\t%d\t%.4g\t%.6g\t%.6g\t", files[r], fd->t_from, fd->t_from / td, nd, sm[k], dense[k],
              tg[k], nd > 1 ? lx / nd : NAN);
-      for (int q = 0; q < nd; q++) printf("%s%.4g", q ? "," : "", pos[q]);
+      for (int q = 0; q < nd; q++) printf("%s%.4g", q ? "," : "", p[q]);
       printf("%s\n", nd ? "" : "-");
     }
     if (!rc) {
@@ -1585,22 +1606,20 @@ static int mode_droplets(int nf, char **files, const options *o)
              sm[k0], fr.f[k1].t_from, sm[k1], 2 * h + 1);
       /* N_f = c (T_g / E_cb)^(-1/2) over the coalescence frames (Fig. 5.19), and the free
          exponent of the log-log line as the check */
-      double sxy = 0, sxx = 0, *lt = malloc(sizeof(double) * fr.n), *ln = malloc(sizeof(double) * fr.n);
+      double sxy = 0, sxx = 0, *xt = malloc(sizeof(double) * fr.n), *yn = malloc(sizeof(double) * fr.n), c, ex, dex;
       size_t m = 0;
-      for (int k = k0; k <= k1 && lt && ln; k++)
+      for (int k = k0; k <= k1 && xt && yn; k++)
         if (sm[k] > 0 && tg[k] > 0) {
           double x = 1 / sqrt(tg[k]);
           sxy += x * sm[k], sxx += x * x;
-          lt[m] = log(tg[k]), ln[m++] = log(sm[k]);
+          xt[m] = tg[k], yn[m++] = sm[k];
         }
-      if (m >= 3) {
-        double c0, c1, c00, c01, c11, ss;
-        gsl_fit_linear(lt, 1, ln, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
+      if (xt && yn && !loglog_fit(xt, yn, m, &c, &ex, &dex))
         printf("# %s: coalescence frames %zu: N_f = %.4g (T_g/E_cb)^(-1/2); free fit N_f ~ (T_g/E_cb)^%.4g +- %.2g\n",
-               files[r], m, sxy / sxx, c1, sqrt(c11));
-      } else
+               files[r], m, sxy / sxx, ex, dex);
+      else
         printf("# %s: coalescence frames %zu: fewer than 3, no fit\n", files[r], m);
-      free(lt), free(ln);
+      free(xt), free(yn);
       /* spacing of adjacent droplets (Fig. 5.16's inset): over --spacing A:B, else over the
          frames of the smoothing window at t0, the nuclei before they merge (the mean of one
          frame's gaps is L_x / N_f; their spread is the pattern's) */
@@ -1609,8 +1628,7 @@ static int mode_droplets(int nf, char **files, const options *o)
       size_t ng = 0;
       for (int k = 0; k < fr.n; k++) {
         if (fr.f[k].t_from < a || fr.f[k].t_from > b) continue;
-        int nd = droplet_centres(&fr.f[k], minw, s, len, pos, &dense);
-        for (int q = 0; q < nd && nd > 1; q++) gaps[ng++] = gap_after(pos, nd, q, lx);
+        for (int q = 0; q < cnt[k] && cnt[k] > 1; q++) gaps[ng++] = gap_after(pos + (size_t)k * nx, cnt[k], q, lx);
       }
       double gm = 0, g2 = 0;
       for (size_t q = 0; q < ng; q++) gm += gaps[q], g2 += gaps[q] * gaps[q];
@@ -1620,7 +1638,7 @@ static int mode_droplets(int nf, char **files, const options *o)
       printf("# %s: spacing of adjacent droplets over t in [%.6g, %.6g]: mean %.4g d, sd %.3g, median %.4g, "
              "%zu gaps\n", files[r], a, b, ng ? gm : NAN, sd, ng ? gaps[ng / 2] : NAN, ng);
     }
-    free(s), free(len), free(cnt), free(sm), free(tg), free(pos), free(gaps);
+    free(s), free(len), free(cnt), free(sm), free(tg), free(dense), free(pos), free(gaps);
     frames_free(&fr);
   }
   return rc;
@@ -1631,8 +1649,8 @@ static int mode_droplets(int nf, char **files, const options *o)
 /* A cell is crystalline where its grains hold more bridges than the fluid's: the coordination
    z = 2 n_cb / n (bridges per grain) above a cut.  Grains in hexagonal layers touch six in
    the layer and more in the layers beside it, where the fluid's keep about four (the cells of
-   the Fig. 5.20 system, T_g/E_cb about 0.7 in both phases, give two classes near z = 4.3 and
-   6); the cut is Otsu's over every cell of the run's frames in [--from, --to] (the hot gas of
+   the Fig. 5.20 system, T_g/E_cb about 0.7 in both phases, give two classes near z = 4.1 and
+   5.5); the cut is Otsu's over every cell of the run's frames in [--from, --to] (the hot gas of
    the start has z near 0: leave it out), refused when the classes are less than a factor 1.26
    apart, or --t-fg Z.  --field chooses another field (bridges, density: crystalline above;
    temperature: below) and --t-sf X is the temperature cut T_g/E_cb < X.  Domains are the
@@ -1650,10 +1668,10 @@ static int mode_domains(int nf, char **files, const options *o)
     if (need_dim(files[r], 3, "domains needs a 3D run (a lateral plane); droplets is the 2D mode")) return 1;
     if ((rc = load_frames(files[r], &ot, &fr))) break;
     double td = t_driv(files[r]), cell = fr.f[0].lx / fr.f[0].nx * (fr.f[0].ly / fr.f[0].ny);
-    double *lt = malloc(sizeof(double) * fr.n), *ln = malloc(sizeof(double) * fr.n);
-    double a_first = NAN, a_last = NAN;
+    double *xt = malloc(sizeof(double) * fr.n), *yn = malloc(sizeof(double) * fr.n);
+    double a_first = NAN, a_last = NAN, a, beta, dbeta;
     size_t m = 0;
-    for (int k = 0; k < fr.n && lt && ln; k++) {
+    for (int k = 0; k < fr.n && xt && yn; k++) {
       field *fd = &fr.f[k];
       size_t c = (size_t)fd->nx * fd->ny, solid = 0;
       for (size_t j = 0; j < c; j++) /* make_mask: crystalline is the side that is not gas */
@@ -1669,18 +1687,15 @@ static int mode_domains(int nf, char **files, const options *o)
       if (per > o->xmin && per <= o->xmax && nd > 0) {
         if (!m) a_first = frac;
         a_last = frac;
-        lt[m] = log(per), ln[m++] = log(nd);
+        xt[m] = per, yn[m++] = nd;
       }
     }
-    if (m >= 3) {
-      double c0, c1, c00, c01, c11, ss;
-      gsl_fit_linear(lt, 1, ln, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
-      /* gsl_fit_linear: the error from the residuals' scatter (the counts' own is not known) */
+    if (xt && yn && !loglog_fit(xt, yn, m, &a, &beta, &dbeta)) /* error: the residuals' scatter */
       printf("# %s: fit n_d = a (t/T_driv)^beta over %g < t/T_driv <= %g (%zu frames): a = %.4g, beta = %.4g +- %.2g; "
-             "area fraction %.4g -> %.4g\n", files[r], o->xmin, o->xmax, m, exp(c0), c1, sqrt(c11), a_first, a_last);
-    } else
+             "area fraction %.4g -> %.4g\n", files[r], o->xmin, o->xmax, m, a, beta, dbeta, a_first, a_last);
+    else
       printf("# %s: fewer than 3 frames with domains in %g < t/T_driv <= %g: no fit\n", files[r], o->xmin, o->xmax);
-    free(lt), free(ln);
+    free(xt), free(yn);
     frames_free(&fr);
   }
   return rc;
@@ -1717,23 +1732,6 @@ static int plug_centre(const field *fd, const options *o, double cut, double pre
   }
   free(s), free(len);
   return none;
-}
-
-/* A power law y = D x^alpha through (x, y) by the log-log line; 1 with fewer than 3 points. */
-static int loglog_fit(const double *x, const double *y, size_t n, double *d, double *alpha)
-{
-  double *lx = malloc(sizeof(double) * (n ? n : 1)), *ly = malloc(sizeof(double) * (n ? n : 1));
-  size_t m = 0;
-  for (size_t i = 0; i < n && lx && ly; i++)
-    if (x[i] > 0 && y[i] > 0) lx[m] = log(x[i]), ly[m++] = log(y[i]);
-  int rc = m < 3;
-  if (!rc) {
-    double c0, c1, c00, c01, c11, ss;
-    gsl_fit_linear(lx, 1, ly, 1, m, &c0, &c1, &c00, &c01, &c11, &ss);
-    *d = exp(c0), *alpha = c1;
-  }
-  free(lx), free(ly);
-  return rc;
 }
 
 #define PLUG_BOOT 400 /* bootstrap resamples of the runs */
@@ -1822,7 +1820,7 @@ static int mode_plug(int nf, char **files, const options *o)
     double *x = malloc(sizeof(double) * nt), *y = malloc(sizeof(double) * nt), d, alpha;
     for (int k = 0; x && y && k < nt; k++)
       if (px[k] > o->xmin && px[k] <= o->xmax && cnt[k] > 0) x[n] = px[k], y[n++] = msd[k] / (lx * lx);
-    if (!x || !y || loglog_fit(x, y, n, &d, &alpha)) {
+    if (!x || !y || loglog_fit(x, y, n, &d, &alpha, NULL)) {
       printf("# fewer than 3 frames with a displacement in %g < t/T_driv <= %g: no fit\n", o->xmin, o->xmax);
     } else {
       gsl_rng *g = gsl_rng_alloc(gsl_rng_mt19937);
@@ -1842,7 +1840,7 @@ static int mode_plug(int nf, char **files, const options *o)
         for (int k = 0; k < nt; k++)
           if (px[k] > o->xmin && px[k] <= o->xmax && bc[k] > 0) x[m] = px[k], y[m++] = bm[k] / bc[k] / (lx * lx);
         double bd, ba;
-        if (loglog_fit(x, y, m, &bd, &ba)) continue;
+        if (loglog_fit(x, y, m, &bd, &ba, NULL)) continue;
         sa += ba, sa2 += ba * ba, sd += log10(bd), sd2 += log10(bd) * log10(bd), nb++;
       }
       gsl_rng_free(g);
