@@ -186,17 +186,6 @@ static int need(hid_t f, const char *file, const char *path, const char *hint)
   return 1;
 }
 
-static int param(hid_t f, const char *file, const char *key, double *v, int required)
-{
-  if (H5Aexists_by_name(f, "/parameters", key, H5P_DEFAULT) <= 0 ||
-      wg_h5_read_param_double(f, key, v) != WG_OK) {
-    *v = NAN;
-    if (required) fprintf(stderr, PROG ": %s: no parameter %s in /parameters\n", file, key);
-    return required;
-  }
-  return 0;
-}
-
 static int field_alloc(field *fd)
 {
   size_t c = (size_t)fd->nx * fd->ny;
@@ -473,12 +462,12 @@ static enum source_kind pick_source(hid_t f, const field *fd, const options *o, 
 
 static int run_head(hid_t f, field *fd)
 {
-  if (param(f, fd->file, "e_cb", &fd->e_cb, 1)) return 1;
-  param(f, fd->file, "gamma", &fd->gamma, 0);
-  param(f, fd->file, "estar", &fd->estar, 0);
-  param(f, fd->file, "s_crit", &fd->s_crit, 0);
-  param(f, fd->file, "f_b", &fd->f_b, 0);
-  param(f, fd->file, "height", &fd->height, 0);
+  if (wg_run_param(f, fd->file, "e_cb", &fd->e_cb, 1)) return 1;
+  wg_run_param(f, fd->file, "gamma", &fd->gamma, 0);
+  wg_run_param(f, fd->file, "estar", &fd->estar, 0);
+  wg_run_param(f, fd->file, "s_crit", &fd->s_crit, 0);
+  wg_run_param(f, fd->file, "f_b", &fd->f_b, 0);
+  wg_run_param(f, fd->file, "height", &fd->height, 0);
   if (need(f, fd->file, "/particles/all/box/edges", NULL)) return 1;
   int rank;
   hsize_t dims[8];
@@ -1447,8 +1436,8 @@ static double t_driv(const char *file)
   hid_t f = wg_run_open(file);
   if (f < 0) return NAN;
   double gam, es, ecb, g;
-  param(f, file, "gamma", &gam, 0), param(f, file, "estar", &es, 0), param(f, file, "e_cb", &ecb, 0);
-  param(f, file, "gravity", &g, 0);
+  wg_run_param(f, file, "gamma", &gam, 0), wg_run_param(f, file, "estar", &es, 0), wg_run_param(f, file, "e_cb", &ecb, 0);
+  wg_run_param(f, file, "gravity", &g, 0);
   wg_h5_close(f);
   if (!isfinite(g)) g = 1; /* wetgran-run's default */
   if (!(gam > 0) || !(es > 0) || !(ecb > 0)) return NAN;

@@ -20,6 +20,8 @@ typedef struct reduce_opts {
   long frames[MAX_PICK];           /* chosen snapshot indices (negative: from the end) */
   int series_all, nseries;
   const char *series[MAX_PICK];
+  int heights_all, nheights;       /* fields of the height maps kept (default all) */
+  char heights[8][64];
   int nattrs;
   const char *attrs[MAX_PICK];     /* KEY=VALUE written on /record */
 } reduce_opts;
@@ -31,10 +33,13 @@ static void usage(FILE *o)
   fprintf(o,
           "Usage: wetgran-reduce RUN.h5 -o RECORD.h5 [--snapshots none|last|all|K[,K...]]\n"
           "                      [--series all|none|NAME[,NAME...]] [--attr KEY=VALUE ...]\n"
+          "                      [--heights all|none|FIELD[,FIELD...]]\n"
           "Writes a record of a run: a file of the run's own layout that every wetgran tool\n"
           "reads like the run, holding the parameters, provenance, summary, box, per-particle\n"
-          "constants, all profiles and wall positions, the chosen time series (default:\n"
-          "temperature,bridges) and the chosen snapshots with their bridge lists (default:\n"
+          "constants, all profiles, lateral maps and wall positions, the chosen time series\n"
+          "(default: temperature,bridges), the chosen fields of the height maps (default: all;\n"
+          "of number_density, bridge_density, temperature, packing_fraction) and the chosen\n"
+          "snapshots with their bridge lists (default:\n"
           "none; K counts from 0, negative from the end).  Numbers are copied bit for bit,\n"
           "stored shuffled and deflated.  --attr adds a string attribute to /record (the\n"
           "archive's provenance: key, engine version, CPU seconds ...).  The record is written\n"
@@ -67,6 +72,7 @@ static int parse_args(int argc, char **argv, reduce_opts *o)
   o->series[0] = "temperature";
   o->series[1] = "bridges";
   o->nseries = 2;
+  o->heights_all = 1;
   for (int a = 1; a < argc; a++) {
     const char *s = argv[a];
     if (!strcmp(s, "-o") && a + 1 < argc) o->out = argv[++a];
@@ -98,6 +104,26 @@ static int parse_args(int argc, char **argv, reduce_opts *o)
         static char copy[4096];
         snprintf(copy, sizeof copy, "%s", v);
         if ((o->nseries = parse_list(copy, o->series, MAX_PICK, "--series")) < 0) return 2;
+      }
+    } else if (!strcmp(s, "--heights") && a + 1 < argc) {
+      const char *v = argv[++a];
+      o->heights_all = !strcmp(v, "all");
+      o->nheights = 0;
+      if (!o->heights_all && strcmp(v, "none") != 0) {
+        static const char *known[] = {"number_density", "bridge_density", "temperature",
+                                      "packing_fraction"};
+        char copy[4096], *save = NULL;
+        snprintf(copy, sizeof copy, "%s", v);
+        for (char *f = strtok_r(copy, ",", &save); f; f = strtok_r(NULL, ",", &save)) {
+          int ok = 0;
+          for (int k = 0; k < 4; k++) ok |= !strcmp(f, known[k]);
+          if (!ok || o->nheights == 8) {
+            fprintf(stderr, "%s: option --heights: '%s' is not a field of the height maps "
+                    "(number_density, bridge_density, temperature, packing_fraction)\n", prog, f);
+            return 2;
+          }
+          snprintf(o->heights[o->nheights++], sizeof o->heights[0], "%s", f);
+        }
       }
     } else if (!strcmp(s, "--attr") && a + 1 < argc) {
       if (o->nattrs == MAX_PICK || !strchr(argv[a + 1], '=')) {
@@ -387,6 +413,19 @@ static int keep_series(const reduce_opts *o, const char *name)
   return 0;
 }
 
+/* The height maps' group with its attributes and the chosen fields only. */
+static int copy_heights(hid_t obs, hid_t dobs, const reduce_opts *o)
+{
+  if (o->nheights == 0) return WG_OK;
+  hid_t sg = H5Gopen2(obs, "heights", H5P_DEFAULT), dg = sg >= 0 ? new_group(dobs, "heights", sg) : -1;
+  int rc = sg >= 0 && dg >= 0 ? WG_OK : WG_EIO;
+  for (int k = 0; rc == WG_OK && k < o->nheights; k++)
+    if (H5Lexists(sg, o->heights[k], H5P_DEFAULT) > 0) rc = copy_whole(sg, dg, o->heights[k]);
+  if (dg >= 0) H5Gclose(dg);
+  if (sg >= 0) H5Gclose(sg);
+  return rc;
+}
+
 static int reduce(hid_t src, hid_t dst, const reduce_opts *o)
 {
   int rc = copy_attrs(src, dst);
@@ -419,7 +458,8 @@ static int reduce(hid_t src, hid_t dst, const reduce_opts *o)
         char name[256];
         member_name(sg, j, name);
         if (!strcmp(top, "observables")) {
-          if (!is_element(sg, name)) rc = copy_whole(sg, dg, name); /* profiles */
+          if (!strcmp(name, "heights") && !o->heights_all) rc = copy_heights(sg, dg, o);
+          else if (!is_element(sg, name)) rc = copy_whole(sg, dg, name); /* profiles, maps */
           else if (!strcmp(name, "walls") || keep_series(o, name)) rc = copy_whole(sg, dg, name);
           continue;
         }

@@ -48,12 +48,13 @@ FIGURE := $(FIGDIR)/$(FIGNAME).png
 
 # The simulator, through the record archive (scripts/record): each run's file in $(RUNDIR) is
 # its record, the run cut down to what the figure is drawn from (conf record_snapshots:
-# none, last, all or K,K...; record_series: the time series kept, or all); the whole run goes
+# none, last, all or K,K...; record_series: the time series kept, or all; record_heights: the
+# fields of the height maps kept, when not all); the whole run goes
 # to $(RUNDIR)/whole.  A record already in data/records/<id>/<profile>/ made from the same scene
 # and arguments is copied instead of simulated, whatever engine version made it (RERUN=1
 # simulates those of another version again).  `make archive` files this profile's records.
 ARCHIVE := $(TOP)/data/records/$(ID)/$(PROFILE)
-RECORD := --snapshots $(or $(call conf,record_snapshots),none) --series $(or $(call conf,record_series),temperature$(comma)bridges)
+RECORD := --snapshots $(or $(call conf,record_snapshots),none) --series $(or $(call conf,record_series),temperature$(comma)bridges)$(if $(call conf,record_heights), --heights $(call conf,record_heights))
 WGRUN := $(TOP)/scripts/record $(ARCHIVE) $(ENGINE) '$(RECORD)' $(BIN)/wetgran-run
 
 # results.tsv ends with the engine versions that made its points (scripts/stamp-engines; the

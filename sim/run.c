@@ -243,16 +243,16 @@ static void sample_profile(wg_run *run)
   pr->samples++;
 }
 
-/* One sample of the lateral maps (maps.h): every particle with its bridges. */
-static int sample_map(wg_run *run)
+/* One sample of the lateral or height maps (maps.h): every particle with its bridges. */
+static int sample_map(wg_run *run, wg_map *map)
 {
   const uint8_t *nbond = bond_counts(run);
   for (long i = 0; i < run->sc->n; i++) {
     double r[3], v[3], radius, m;
     particle(run, i, r, v, &radius, &m);
-    wg_map_add(&run->map, r, v, m, nbond ? nbond[i] : 0);
+    wg_map_add(map, r, v, m, radius, nbond ? nbond[i] : 0);
   }
-  return wg_map_end_sample(&run->map);
+  return wg_map_end_sample(map);
 }
 
 /* Snapshot record in the scratch file: positions, velocities (n x dim doubles each),
@@ -473,6 +473,7 @@ static int ckpt_write_observers(wg_run *run, hid_t f)
     st |= wg_h5_write(f, "run/frame_bonds", H5T_NATIVE_LLONG, 1, df, run->frame_bonds, "1", "bridges per frame");
   }
   st |= wg_map_checkpoint_write(&run->map, f);
+  st |= wg_map_checkpoint_write(&run->heights, f);
   long long k[7] = {run->k_series, run->k_snapshot, run->k_profile, run->k_checkpoint,
                     run->prof.samples, run->nframes, run->frames_bytes};
   hsize_t d7[1] = {7};
@@ -675,6 +676,7 @@ static int ckpt_load_observers(wg_run *run, hid_t f)
     if (st == WG_OK) st = read_into(f, ck, "run/frame_bonds", H5T_NATIVE_LLONG, run->frame_bonds, (hsize_t)k[5]);
   }
   if (st == WG_OK) st = wg_map_checkpoint_read(&run->map, f, ck);
+  if (st == WG_OK) st = wg_map_checkpoint_read(&run->heights, f, ck);
   if (st != WG_OK) return st;
   run->k_series = k[0];
   run->k_snapshot = k[1];
@@ -731,13 +733,15 @@ static int cmp_double(const void *a, const void *b)
 
 static int clock_build(const wg_run *run, run_clock *c)
 {
-  size_t n = run->rows + (size_t)run->nframes + (size_t)run->map.nframes, k = 0;
+  size_t n = run->rows + (size_t)run->nframes + (size_t)run->map.nframes +
+             (size_t)run->heights.nframes, k = 0;
   c->n = 0;
   if (!(c->t = malloc(sizeof(double) * (n ? n : 1))))
     return wg_error(WG_ENOMEM, "run file", "no memory for the sampling clock");
   for (size_t r = 0; r < run->rows; r++) c->t[k++] = run->series[r * NCOL + COL_TIME];
   for (long i = 0; i < run->nframes; i++) c->t[k++] = run->frame_time[i];
   for (long i = 0; i < run->map.nframes; i++) c->t[k++] = run->map.time[i];
+  for (long i = 0; i < run->heights.nframes; i++) c->t[k++] = run->heights.time[i];
   qsort(c->t, n, sizeof(double), cmp_double);
   for (size_t i = 0; i < n; i++)
     if (c->n == 0 || c->t[i] != c->t[c->n - 1]) c->t[c->n++] = c->t[i];
@@ -1145,6 +1149,7 @@ static int write_run_file(wg_run *run, double wall_s)
   if (st == WG_OK) st = write_series(run, f, &clk);
   if (st == WG_OK) st = write_walls(run, f, &clk);
   if (st == WG_OK) st = wg_map_write(&run->map, f, clock_step_of, &clk);
+  if (st == WG_OK) st = wg_map_write(&run->heights, f, clock_step_of, &clk);
   if (st == WG_OK) st = wg_h5_attr_string(f, "/observables", "step_meaning", WG_H5_STEP_MEANING);
   free(clk.t);
   if (st == WG_OK) st = write_profiles(run, f);
@@ -1172,6 +1177,10 @@ int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt)
   if (st == WG_OK)
     st = wg_map_init(&run->map, sc->map_bins, sc->map_bins_y, sc->dim, sc->lx, sc->ly,
                      sc->map_start, sc->dt_map, sc->map_samples);
+  if (st == WG_OK)
+    st = wg_map_init_height(&run->heights, sc->height_bins, sc->dim, sc->lx, sc->ly,
+                            -sc->amplitude, sc->height + 2 * sc->amplitude, sc->height_start,
+                            sc->dt_height, sc->height_samples);
   if (st != WG_OK) return st;
   if (is_td(run) && sc->s_crit > 0 && !(run->nbond = malloc((size_t)sc->n)))
     return wg_error(WG_ENOMEM, "run", "no memory for %ld bridge counts", sc->n);
@@ -1219,6 +1228,8 @@ static double next_time(const wg_run *run, int *what)
   }
   double tm = wg_map_next_time(&run->map);
   if (tm < t) t = tm;
+  double th = wg_map_next_time(&run->heights);
+  if (th < t) t = th;
   if (sc->dt_checkpoint > 0) {
     double tc = run->k_checkpoint * sc->dt_checkpoint;
     if (tc < t) t = tc;
@@ -1399,7 +1410,8 @@ int wg_run_execute(wg_run *run)
       sample_profile(run);
       run->k_profile++;
     }
-    if (st == WG_OK && wg_map_next_time(&run->map) <= t) st = sample_map(run);
+    if (st == WG_OK && wg_map_next_time(&run->map) <= t) st = sample_map(run, &run->map);
+    if (st == WG_OK && wg_map_next_time(&run->heights) <= t) st = sample_map(run, &run->heights);
     if (st == WG_OK && ((sc->dt_snapshot > 0 && run->k_snapshot * sc->dt_snapshot <= t) || final)) {
       if (!(final && run->nframes > 0 && run->frame_time[run->nframes - 1] == run_now(run)))
         st = write_frame(run);
@@ -1452,5 +1464,6 @@ void wg_run_free(wg_run *run)
   free(run->frame_bonds);
   wg_cellsums_free(&run->prof.sums);
   wg_map_free(&run->map);
+  wg_map_free(&run->heights);
   memset(run, 0, sizeof *run);
 }

@@ -58,6 +58,7 @@ typedef struct wg_run {
   long long frames_bytes;
   wg_profile prof;
   wg_map map;                /* lateral maps over windows of time (maps.h) */
+  wg_map heights;            /* height maps over windows of time (maps.h) */
   /* next sampling times, as multiples of their intervals (exact, no accumulation) */
   long long k_series, k_snapshot, k_profile, k_checkpoint;
   double wall_start, wall_resumed; /* wall-clock bookkeeping (volatile) */

@@ -2,6 +2,7 @@
 #include "run_open.h"
 
 #include <errno.h>
+#include <math.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -95,4 +96,15 @@ FILE *wg_table_open(const char *path)
   FILE *f = fopen(path, "r");
   if (!f) wg_error(WG_EIO, path, "cannot open: %s", strerror(errno));
   return f;
+}
+
+int wg_run_param(hid_t f, const char *file, const char *key, double *v, int required)
+{
+  if (H5Aexists_by_name(f, "/parameters", key, H5P_DEFAULT) <= 0 ||
+      wg_h5_read_param_double(f, key, v) != WG_OK) {
+    *v = NAN;
+    if (required) wg_error(WG_EINVAL, file, "no parameter %s in /parameters", key);
+    return required;
+  }
+  return 0;
 }

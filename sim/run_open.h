@@ -17,4 +17,8 @@ hid_t wg_run_open(const char *path);
    table was meant). */
 FILE *wg_table_open(const char *path);
 
+/* A real of a run's /parameters into *v (NAN when absent).  Returns 1 after one line on stderr
+   when a required one is absent, else 0. */
+int wg_run_param(hid_t f, const char *file, const char *key, double *v, int required);
+
 #endif

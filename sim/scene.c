@@ -67,7 +67,8 @@ enum {
   K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_REST_SPEED, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_INIT_JITTER, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_MAP_BINS, K_MAP_BINS_Y, K_MAP_START,
-  K_DT_MAP, K_MAP_SAMPLES, K_DT_CHECKPOINT, K_STALL_RATE, K_STALL_ACTION,
+  K_DT_MAP, K_MAP_SAMPLES, K_HEIGHT_BINS, K_HEIGHT_START, K_DT_HEIGHT, K_HEIGHT_SAMPLES,
+  K_DT_CHECKPOINT, K_STALL_RATE, K_STALL_ACTION,
   K_SHEAR_FORCE, K_SHEAR_BINS, K_SHEAR_ON, K_SHEAR_OFF,
   K_CONTACT, K_T_CONTACT, K_STEPS_PER_CONTACT, K_HERTZ_AD, K_SKIN, K_BRIDGE_LAW,
   K_BRIDGE_VOLUME, K_CONTACT_ANGLE, K_WALL_BRIDGES, K_INTEGRATOR, K_MU, K_MU_WALL, K_KT_RATIO,
@@ -207,6 +208,18 @@ static const key_desc keys[NKEYS] = {
                 "window unfinished at t_end gives none)", NULL, 0, 0},
   [K_MAP_SAMPLES] = {"map_samples", T_INT, OFF(map_samples), 1, 1000000, 0, DEF_VALUE, 10,
                      NULL, "", "samples per map window, at equal intervals", NULL, 0, 0},
+  [K_HEIGHT_BINS] = {"height_bins", T_INT, OFF(height_bins), 0, 1000000, 0, DEF_VALUE, 0, NULL,
+                     "", "slabs across the container's reach, -A <= z < height + A, of the "
+                     "height maps (packing fraction, number and bridge density, T_g averaged "
+                     "over the lateral plane and windows of time, /observables/heights); 0 = none",
+                     NULL, 0, 0},
+  [K_HEIGHT_START] = {"height_start", T_DOUBLE, OFF(height_start), 0, INF, MAX_EXCL, DEF_VALUE, 0,
+                      NULL, "sqrt(d/g)", "time the first height-map window begins", NULL, 0, 0},
+  [K_DT_HEIGHT] = {"dt_height", T_DOUBLE, OFF(dt_height), 0, INF, MIN_EXCL | MAX_EXCL, DEF_COND,
+                   0, "dt_series", "sqrt(d/g)", "length of a height-map window (one frame per "
+                   "window)", NULL, 0, 0},
+  [K_HEIGHT_SAMPLES] = {"height_samples", T_INT, OFF(height_samples), 1, 1000000, 0, DEF_VALUE, 1,
+                        NULL, "", "samples per height-map window, at equal intervals", NULL, 0, 0},
   [K_DT_CHECKPOINT] = {"dt_checkpoint", T_DOUBLE, OFF(dt_checkpoint), 0, INF, MAX_EXCL,
                        DEF_COND, 0, "t_end/10", "sqrt(d/g)",
                        "checkpoint interval; 0 = no checkpoints", NULL, 0, 0},
@@ -1027,6 +1040,10 @@ static int resolve_output_times(wg_scene *sc)
   if (!given(sc, K_DT_PROFILE)) sc->dt_profile = sc->dt_series;
   if (!given(sc, K_DT_CHECKPOINT)) sc->dt_checkpoint = sc->t_end / 10;
   if (!given(sc, K_DT_MAP)) sc->dt_map = sc->t_end / 100;
+  if (!given(sc, K_DT_HEIGHT)) sc->dt_height = sc->dt_series;
+  if (sc->height_start > sc->t_end)
+    return pair_error(sc, K_HEIGHT_START, K_T_END, "value %g out of range [0, t_end = %g]",
+                      sc->height_start, sc->t_end);
   if (sc->dim != 3) {
     if (given(sc, K_MAP_BINS_Y) && sc->map_bins_y != 1)
       return pair_error(sc, K_MAP_BINS_Y, K_DIM, "a 2D map is one row of cells along x: "
@@ -1159,6 +1176,8 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user)
     /* the shear field's keys only with a field: a scene without one gives the parameters
        (and checkpoint fingerprint) it gave before the field existed */
     if (k >= K_SHEAR_FORCE && k <= K_SHEAR_OFF && sc->shear_force == 0) continue;
+    /* the same for the height maps */
+    if (k >= K_HEIGHT_BINS && k <= K_HEIGHT_SAMPLES && sc->height_bins == 0) continue;
     format_value(sc, k, buf, sizeof buf);
     if ((rc = fn(user, keys[k].name, buf, keys[k].unit[0] ? keys[k].unit : "1",
                  keys[k].desc)))

@@ -53,6 +53,10 @@ typedef struct wg_scene {
   double map_start;    /* map_start: time the first map window begins (default 0) */
   double dt_map;       /* dt_map: length of a map window (default t_end/100) */
   int map_samples;     /* map_samples: samples per map window (default 10) */
+  int height_bins;     /* height_bins: slabs of the height maps across -A ... height + A, 0 = none */
+  double height_start; /* height_start: time the first height-map window begins (default 0) */
+  double dt_height;    /* dt_height: length of a height-map window (default dt_series) */
+  int height_samples;  /* height_samples: samples per height-map window (default 1) */
   double dt_checkpoint;/* dt_checkpoint: checkpoint interval, 0 = none (default t_end/10) */
   double stall_rate;   /* stall_rate: physical events per particle and unit time above which an
                           event-driven run warns that it crawls; 0 = never (default 1000) */
@@ -90,7 +94,7 @@ typedef struct wg_scene {
 
   /* bookkeeping of where each key came from, for error messages and provenance */
   char source[256];    /* scene file path ("<none>" if only command-line pairs) */
-  int key_line[64];    /* per table entry: line in the file that set it, 0 = default, -1 = command line */
+  int key_line[96];    /* per table entry: line in the file that set it, 0 = default, -1 = command line */
 } wg_scene;
 
 /* Defaults for every key; "unset" for required ones. */

@@ -53,6 +53,14 @@ echo "== event rates (events: collisions, bridge ruptures/reflections, wall hits
 run "a_shake2d"            "$scenes/shake2d.ini" t_end=1000 profile_start=500 dt_checkpoint=0
 run "b_gas3d_N1e5_phi0.3"  "$scenes/gas3d.ini" n=100000 t_end=2
 run "c_shake3d_fig5.2c_N1e4" "$scenes/shake3d_5_2c.ini" t_end=30 dt_checkpoint=0
+echo "== the Leidenfrost column (issue 45): 3e4 spheres, 400 d high, against the gas above"
+# the thesis's Fig. 6.3 column for 20 t.u. after its plug has lifted (t = 10 ... 30 from the
+# packed start), without height maps and with the figures' 1 d slabs every 0.5 t.u.: events/s
+# of the column over the gas's (a container that cost per event would show here)
+run "h_leidenfrost3d_N3e4"  "$scenes/leidenfrost3d.ini" t_end=30 height_bins=0 dt_checkpoint=0
+run "i_leidenfrost3d_maps"  "$scenes/leidenfrost3d.ini" t_end=30 height_bins=402 dt_height=0.5 dt_checkpoint=0
+awk -F'\t' '$1 ~ /^b_gas3d/ { g = $6 } $1 ~ /^h_leid/ { c = $6; w = $5 } $1 ~ /^i_leid/ { m = $5 }
+  END { printf "leidenfrost column: %.3g events/s, %.2f x the gas'"'"'s; height maps cost %.1f %% of the wall time\n", c, c / g, 100 * (m / w - 1) }' "$tsv" | tee "$out/bench_leidenfrost.txt"
 echo "== shear field (issue 42): cost of the hooks when the field is absent or off, and with it on"
 # the same 3D wet shaker three times in a row: no field; a field that is never switched on
 # (every hook's flag is tested, nothing else runs); the field on.  Ratios against the first.
