@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "extrema.h"
 #include "io_h5.h"
 #include "run_open.h"
 #include "wg_args.h"
@@ -177,34 +178,6 @@ static int mode_map(const options *o, int nfile, char **files)
   return 0;
 }
 
-/* Turning points of x[0..n-1] with hysteresis: a maximum is taken once x has fallen `swing`
-   below it, a minimum once x has risen `swing` above it, alternately.  Frame indices to
-   idx[], +1 (top) or -1 (bottom) to kind[]; returns their number. */
-static long turning_points(const double *x, long n, double swing, long *idx, int *kind)
-{
-  long m = 0, best = -1;
-  int dir = 0; /* 0: not yet known, +1 looking for a top, -1 for a bottom */
-  long lo = -1, hi = -1;
-  for (long i = 0; i < n; i++) {
-    if (!isfinite(x[i])) continue;
-    if (dir == 0) {
-      if (lo < 0 || x[i] < x[lo]) lo = i;
-      if (hi < 0 || x[i] > x[hi]) hi = i;
-      if (x[i] >= x[lo] + swing) dir = +1, best = i;
-      else if (x[i] <= x[hi] - swing) dir = -1, best = i;
-      continue;
-    }
-    if (dir > 0) {
-      if (x[i] > x[best]) best = i;
-      else if (x[i] <= x[best] - swing) idx[m] = best, kind[m++] = +1, dir = -1, best = i;
-    } else {
-      if (x[i] < x[best]) best = i;
-      else if (x[i] >= x[best] + swing) idx[m] = best, kind[m++] = -1, dir = +1, best = i;
-    }
-  }
-  return m;
-}
-
 /* The frames of a run's window: h_I per frame and the turning points. */
 typedef struct track {
   long n, m;          /* frames in the window, turning points */
@@ -221,29 +194,6 @@ static void track_free(track *tr)
   free(tr->frame), free(tr->hi), free(tr->p), free(tr->tp), free(tr->kind);
 }
 
-static int cmp_double(const void *a, const void *b)
-{
-  double x = *(const double *)a, y = *(const double *)b;
-  return (x > y) - (x < y);
-}
-
-/* The default swing: 30 % of h_I's 10-90 percentile range over the window, at least 2 d
-   (the plug's interface jitters by a few d while it rests on the cushion at the bottom). */
-static double auto_swing(const double *x, long n)
-{
-  double *v = malloc(sizeof(double) * (n ? n : 1)), s = 2;
-  long m = 0;
-  if (!v) return s;
-  for (long i = 0; i < n; i++)
-    if (isfinite(x[i])) v[m++] = x[i];
-  if (m >= 10) {
-    qsort(v, (size_t)m, sizeof(double), cmp_double);
-    s = fmax(s, 0.3 * (v[(9 * m) / 10] - v[m / 10]));
-  }
-  free(v);
-  return s;
-}
-
 static int track_run(const hmaps *h, const options *o, track *tr)
 {
   memset(tr, 0, sizeof *tr);
@@ -258,8 +208,9 @@ static int track_run(const hmaps *h, const options *o, track *tr)
     tr->hi[tr->n] = tr->p[tr->n].h_i;
     tr->frame[tr->n++] = i;
   }
-  tr->swing = o->swing > 0 ? o->swing : auto_swing(tr->hi, tr->n);
-  tr->m = turning_points(tr->hi, tr->n, tr->swing, tr->tp, tr->kind);
+  /* default swing: the interface jitters by a few d while the plug sits on its cushion */
+  tr->swing = o->swing > 0 ? o->swing : wg_auto_swing(tr->hi, tr->n, 0.3, 2);
+  tr->m = wg_turning_points(tr->hi, tr->n, tr->swing, tr->tp, tr->kind);
   return 0;
 }
 
