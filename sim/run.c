@@ -31,9 +31,12 @@ enum {
   COL_TIME, COL_KINETIC, COL_POTENTIAL, COL_INJ_WALL, COL_DIS_COLL, COL_DIS_WALL, COL_DIS_RUPT,
   COL_RESIDUAL, COL_TG, COL_BRIDGES, COL_COLLISIONS, COL_CAPTURES, COL_RUPTURES,
   COL_REFLECTIONS, COL_WALL_HITS, COL_WALL_ENTERS, COL_CELL_CROSSINGS, COL_STEPS, COL_REBUILDS,
-  COL_FIELD_WORK, /* last: checkpoints written before it existed have one column less */
+  COL_FIELD_WORK, COL_E_PAR, COL_E_PERP, /* last: older checkpoints have fewer columns */
   NCOL
 };
+/* checkpoints hold NCOL columns, or NCOL - OLD_COLS up to NCOL - 1 when written before the
+   last columns existed (field_work; e_par and e_perp) */
+#define OLD_COLS 3
 
 static const series_column columns[NCOL] = {
     {"time", "tau", "simulated time of the sample", 0, NULL},
@@ -62,6 +65,8 @@ static const series_column columns[NCOL] = {
     {"steps", "1", "time steps since t = 0", ONLY_TD, NULL},
     {"list_rebuilds", "1", "neighbour-list rebuilds since t = 0", ONLY_TD, NULL},
     {"field_work", "m d+2 tau-2", "work done on the particles by the shear field since t = 0 (its bins' forces times the displacements along them)", ONLY_SHEAR, NULL},
+    {"e_par", "m d+2 tau-2", "kinetic energy per particle along the shear force, sum of m v_f^2 / 2 over N (thesis Ch. 8: E_par)", ONLY_SHEAR, NULL},
+    {"e_perp", "m d+2 tau-2", "kinetic energy per particle across the shear force in its plane (along x, where the force varies), sum of m v_x^2 / 2 over N (thesis Ch. 8: E_perp)", ONLY_SHEAR, NULL},
 };
 
 static int is_td(const wg_run *run) { return run->sc->engine == WG_ENGINE_TD; }
@@ -211,6 +216,17 @@ static int sample_series(wg_run *run)
   row[COL_WALL_ENTERS] = (double)s->counts.wall_enters;
   row[COL_CELL_CROSSINGS] = (double)s->counts.cell_crossings;
   row[COL_FIELD_WORK] = wg_ed_field_work(s);
+  if (s->shear) { /* Ch. 8's order parameters */
+    double par = 0, perp = 0;
+    for (long i = 0; i < s->n; i++) {
+      double r[3], v[3], m = wg_ed_mass(s, i);
+      wg_ed_position_at(s, i, s->now, r, v);
+      par += 0.5 * m * v[s->shear->axis] * v[s->shear->axis];
+      perp += 0.5 * m * v[0] * v[0];
+    }
+    row[COL_E_PAR] = par / (double)s->n;
+    row[COL_E_PERP] = perp / (double)s->n;
+  }
   run->rows++;
   return WG_OK;
 }
@@ -655,8 +671,7 @@ static int ckpt_load_observers(wg_run *run, hid_t f)
   int rank;
   hsize_t dims[8] = {0};
   if (st == WG_OK) st = wg_h5_dims(f, "run/series", &rank, dims);
-  /* a checkpoint from before field_work (the last column) has one column less */
-  if (st == WG_OK && (rank != 2 || (dims[1] != NCOL && dims[1] != NCOL - 1))) st = WG_EIO;
+  if (st == WG_OK && (rank != 2 || dims[1] > NCOL || dims[1] < NCOL - OLD_COLS)) st = WG_EIO;
   if (st == WG_OK) {
     size_t width = dims[1];
     run->rows = run->cap = dims[0];

@@ -1,6 +1,6 @@
 #!/bin/bash
-# The shear field through wetgran-run: the series field_work and the closed ledger in the run
-# file, the field switched on and off, --help, a run resumed from its checkpoints (also from
+# The shear field through wetgran-run: the series field_work, e_par and e_perp (Ch. 8) and the
+# closed ledger in the run file, the field switched on and off, --help, a run resumed from its checkpoints (also from
 # one taken at a switching time) identical to the uninterrupted run, and a run without a
 # field writing none of it.
 set -u
@@ -29,6 +29,24 @@ assert np.all(after == after[0]), after
 assert r.max() < 1e-9, r.max()
 assert float(f['/parameters'].attrs['shear_force']) == 0.5
 EOF
+check "e_par and e_perp (Ch. 8): per-particle sum m v_y^2 / 2 and m v_x^2 / 2 of the snapshots at t = 2, 4, 6, 8 (1e-12); equal at the isotropic start, e_par above e_perp by 1.3 while the field drives along y" \
+  "$py" - "$tmp/a.h5" <<'EOF'
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1])
+t = f['/observables/e_par/time'][:]; par = f['/observables/e_par/value'][:]; perp = f['/observables/e_perp/value'][:]
+ts = f['/particles/all/velocity/time'][:]; v = f['/particles/all/velocity/value'][:]; m = f['/particles/all/mass'][:]
+n = 0
+for k, tk in enumerate(ts):
+    i = np.where(t == tk)[0]
+    if len(i) == 0: continue
+    n += 1
+    assert abs(par[i[0]] - (0.5 * m * v[k][:, 1] ** 2).mean()) < 1e-12 * max(1, par[i[0]]), (tk, par[i[0]])
+    assert abs(perp[i[0]] - (0.5 * m * v[k][:, 0] ** 2).mean()) < 1e-12 * max(1, perp[i[0]]), (tk, perp[i[0]])
+assert n >= 4, n
+on = (t > 3) & (t <= 6)
+assert par[on].mean() > 1.3 * perp[on].mean(), (par[on].mean(), perp[on].mean())
+assert abs(par[t == 0][0] / perp[t == 0][0] - 1) < 0.05
+EOF
 for k in 1 3 6; do
   rm -f "$tmp/b.h5" "$tmp/b.h5.ckpt"
   # shellcheck disable=SC2086
@@ -39,8 +57,8 @@ for k in 1 3 6; do
     bash -c "h5diff --exclude-path /provenance '$tmp/a.h5' '$tmp/b.h5' > /dev/null"
 done
 "$run" "$scenes/shake3d_5_2c.ini" n=400 lx=12 ly=12 t_end=2 seed=2 dt_checkpoint=0 -q -o "$tmp/c.h5" 2> /dev/null
-check "without a field: no field_work series, no shear_* parameters" \
-  bash -c "! h5ls '$tmp/c.h5/observables' | grep -q field_work && ! h5dump -A -g /parameters '$tmp/c.h5' | grep -q shear && h5dump -A -g /parameters '$tmp/c.h5' | grep -q grazing_angle"
+check "without a field: no field_work, e_par or e_perp series, no shear_* parameters" \
+  bash -c "! h5ls '$tmp/c.h5/observables' | grep -qE 'field_work|e_par|e_perp' && ! h5dump -A -g /parameters '$tmp/c.h5' | grep -q shear && h5dump -A -g /parameters '$tmp/c.h5' | grep -q grazing_angle"
 check "--help lists shear_force, shear_bins, shear_on, shear_off" \
   bash -c "[ \$('$run' --help 2>&1 | grep -cE '^  shear_(force|bins|on|off) ') -eq 4 ]"
 "$run" "$scenes/shake2d.ini" shear_force=1 t_end=1 profile_start=0 -q -o "$tmp/d.h5" 2> "$tmp/d.err"; rc=$?
