@@ -1424,7 +1424,7 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
   s->periodic[0] = 1;
   if (s->dim == 3) s->periodic[1] = 1;
   s->periodic[s->up] = sc->container == WG_CONTAINER_PERIODIC;
-  s->nwalls = sc->container == WG_CONTAINER_SHAKER ? 2 : 0;
+  s->nwalls = wg_scene_walled(sc) ? 2 : 0;
   s->inelastic = s->eps < 1 || (s->nwalls && s->eps_wall < 1);
   if (s->nwalls) {
     s->wall[0] = (wg_wall){0.0, sc->amplitude, sc->omega, +1};

@@ -113,7 +113,7 @@ static int state_from_run(const wg_scene *sc, wg_particle *p, double *mass)
   for (long i = 0; st == WG_OK && i < n; i++) {
     p[i].radius = 0.5 * buf[i];
     p[i].t = 0;
-    if (sc->container == WG_CONTAINER_SHAKER &&
+    if (wg_scene_walled(sc) &&
         (p[i].r[up] < 0.5 * p[i].radius || p[i].r[up] > sc->height - 0.5 * p[i].radius))
       st = wg_error(WG_EINVAL, path, "init_from: particle %ld (z = %g) is outside the container "
                     "(height %g)", i, p[i].r[up], sc->height);

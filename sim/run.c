@@ -1071,7 +1071,7 @@ static int write_summary(wg_run *run, hid_t f)
 static int write_walls(wg_run *run, hid_t f, const run_clock *clk)
 {
   const wg_scene *sc = run->sc;
-  if (sc->container != WG_CONTAINER_SHAKER) return WG_OK;
+  if (!wg_scene_walled(sc)) return WG_OK;
   double omega = sc->omega > 0 ? sc->omega : 1; /* as the engines: A = 0 then */
   const wg_wall wall[2] = {{0.0, sc->amplitude, omega, +1}, {sc->height, sc->amplitude, omega, -1}};
   const char *name[2] = {"floor", "lid"};
@@ -1123,7 +1123,7 @@ static int write_run_file(wg_run *run, double wall_s)
   int st = WG_OK;
   st |= wg_h5md_header(f, "wetgran", "wetgran-run", wg_version());
   const char *bound[3] = {"periodic", "periodic", "periodic"};
-  if (sc->container == WG_CONTAINER_SHAKER) bound[dim - 1] = "none";
+  if (wg_scene_walled(sc)) bound[dim - 1] = "none";
   double edges[3] = {sc->lx, dim == 3 ? sc->ly : sc->height, sc->height};
   st |= wg_h5md_box(f, "all", dim, edges, bound);
   st |= write_units(f);
@@ -1132,6 +1132,9 @@ static int write_run_file(wg_run *run, double wall_s)
                               ? "positions are in the lab frame: the floor is at z = A sin(omega t) and the lid at "
                                 "z = height + A sin(omega t) (/observables/walls); the last edge is the "
                                 "floor-to-lid distance height"
+                          : sc->container == WG_CONTAINER_BOX
+                              ? "positions are in the box frame: the floor is at z = 0 and the lid at z = height, "
+                                "both at rest; the lateral axes periodic, 0 <= x < edge"
                               : "positions are in the box frame, every axis periodic: 0 <= x < edge");
   st |= wg_h5_attr_string(f, "/particles/all", "step_meaning", WG_H5_STEP_MEANING);
   double *buf = malloc(sizeof(double) * (size_t)n), *dia = malloc(sizeof(double) * (size_t)n);

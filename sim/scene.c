@@ -76,7 +76,7 @@ enum {
 };
 
 static const char *const engine_words[] = {"ed", "td", NULL};
-static const char *const container_words[] = {"shaker", "periodic", NULL};
+static const char *const container_words[] = {"shaker", "periodic", "box", NULL};
 static const char *const mass_words[] = {"unit", "volume", NULL};
 static const char *const init_words[] = {"lattice", "packed", NULL};
 static const char *const contact_words[] = {"linear", "hertz", NULL};
@@ -107,11 +107,12 @@ static const key_desc keys[NKEYS] = {
              "none", "1",
              "packing fraction, periodic only, sets lx = ly = height (< 0.74 in 3D)", NULL,
              G_BOX, 1},
-  [K_CONTAINER] = {"container", T_ENUM, OFF(container), 0, 1, 0, DEF_VALUE,
+  [K_CONTAINER] = {"container", T_ENUM, OFF(container), 0, 2, 0, DEF_VALUE,
                    WG_CONTAINER_SHAKER, NULL, "",
-                   "shaker (vibrated bottom and lid) or periodic box", container_words, 0, 0},
+                   "shaker (vibrated bottom and lid), periodic box, or box (bottom and lid at "
+                   "rest; event-driven)", container_words, 0, 0},
   [K_GRAVITY] = {"gravity", T_DOUBLE, OFF(gravity), 0, 1e3, 0, DEF_COND, 0,
-                 "1 shaker, 0 periodic", "g", "gravitational acceleration", NULL, 0, 0},
+                 "1 shaker or box, 0 periodic", "g", "gravitational acceleration", NULL, 0, 0},
   [K_SIGMA_P] = {"sigma_p", T_DOUBLE, OFF(sigma_p), 0, 0.57735026918962576, MAX_EXCL,
                  DEF_VALUE, 0.06, NULL, "d",
                  "polydispersity: std. dev. of the uniform diameter distribution (Eq. 2.22)",
@@ -824,7 +825,7 @@ static int resolve_box(wg_scene *sc)
 
 static int resolve_gravity(wg_scene *sc)
 {
-  if (!given(sc, K_GRAVITY)) sc->gravity = sc->container == WG_CONTAINER_SHAKER ? 1 : 0;
+  if (!given(sc, K_GRAVITY)) sc->gravity = wg_scene_walled(sc) ? 1 : 0;
   if (sc->container == WG_CONTAINER_SHAKER && sc->gravity == 0)
     return pair_error(sc, K_GRAVITY, K_CONTAINER,
                       "a shaker needs gravity > 0 (Gamma = A w^2/g is undefined for g = 0)");
@@ -941,6 +942,14 @@ static int resolve_bridge(wg_scene *sc)
   return WG_OK;
 }
 
+/* A box's walls are at rest: the time-driven engine has only the shaker's. */
+static int check_box(const wg_scene *sc)
+{
+  if (sc->container == WG_CONTAINER_BOX && sc->engine == WG_ENGINE_TD)
+    return pair_error(sc, K_CONTAINER, K_ENGINE, "container = box is event-driven only");
+  return WG_OK;
+}
+
 static int periodic_driving(wg_scene *sc)
 {
   static const int shaker_only[] = {K_GAMMA, K_ESTAR, K_ESTAR_D};
@@ -1024,8 +1033,8 @@ static int resolve_temperature(wg_scene *sc)
 
 static int check_fill(const wg_scene *sc)
 {
-  if (sc->init_packing && sc->container != WG_CONTAINER_SHAKER)
-    return pair_error(sc, K_INIT, K_CONTAINER, "a packed bed needs container = shaker");
+  if (sc->init_packing && !wg_scene_walled(sc))
+    return pair_error(sc, K_INIT, K_CONTAINER, "a packed bed needs a floor: container = shaker or box");
   if (sc->init_from[0] && given(sc, K_INIT))
     return pair_error(sc, K_INIT, K_INIT_FROM, "give either init or init_from");
   if (!sc->init_from[0] && sc->init_jitter > 0)
@@ -1070,7 +1079,7 @@ static int check_packing(const wg_scene *sc)
   int idx[4] = {K_N, K_LX, K_HEIGHT, K_LY};
   if (given(sc, K_PHI)) return WG_OK;
   fill = (double)sc->n * mean_particle_volume(sc) / box_volume(sc);
-  limit = sc->container == WG_CONTAINER_SHAKER && sc->dim == 2 ? 0.9 : phi_max(sc->dim);
+  limit = wg_scene_walled(sc) && sc->dim == 2 ? 0.9 : phi_max(sc->dim);
   if (fill < limit) return WG_OK;
   return list_error(sc, idx, sc->dim == 3 ? 4 : 3,
                     "%ld particles fill %.1f %% of the box; the limit is %g %%",
@@ -1083,7 +1092,8 @@ int wg_scene_finish(wg_scene *sc)
   if ((rc = check_required(sc)) || (rc = resolve_box(sc)) || (rc = resolve_gravity(sc)) ||
       (rc = resolve_engine(sc)) || (rc = resolve_bridge(sc)) || (rc = resolve_driving(sc)) ||
       (rc = resolve_temperature(sc)) || (rc = check_fill(sc)) || (rc = resolve_output_times(sc)) ||
-      (rc = check_packing(sc)) || (rc = resolve_shear(sc)) || (rc = check_rest(sc)))
+      (rc = check_packing(sc)) || (rc = resolve_shear(sc)) || (rc = check_rest(sc)) ||
+      (rc = check_box(sc)))
     return rc;
   return WG_OK;
 }

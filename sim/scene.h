@@ -9,7 +9,9 @@
 #include "wg.h"
 
 typedef enum { WG_ENGINE_ED = 0, WG_ENGINE_TD = 1 } wg_engine_kind;
-typedef enum { WG_CONTAINER_SHAKER = 0, WG_CONTAINER_PERIODIC = 1 } wg_container_kind;
+/* shaker: floor and lid moving as A sin(w t); periodic: every axis periodic; box: floor and lid
+   at rest (the sheared systems of Ch. 7-8) */
+typedef enum { WG_CONTAINER_SHAKER = 0, WG_CONTAINER_PERIODIC = 1, WG_CONTAINER_BOX = 2 } wg_container_kind;
 typedef enum { WG_STALL_WARN = 0, WG_STALL_STOP = 1 } wg_stall_action;
 
 /* All lengths in mean diameters d, masses in m, times in sqrt(d/g), energies in m g d. */
@@ -131,5 +133,8 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user);
    integer (int64), the seed (uint64) or a word (string). */
 typedef enum { WG_KEY_REAL, WG_KEY_INT, WG_KEY_UINT, WG_KEY_WORD } wg_key_kind;
 wg_key_kind wg_scene_key_kind(const char *key);
+
+/* A floor and a lid bound the container (shaker or box). */
+static inline int wg_scene_walled(const wg_scene *sc) { return sc->container != WG_CONTAINER_PERIODIC; }
 
 #endif

@@ -331,7 +331,7 @@ static const bad_case bad_cases[] = {
   {"non-number", {{9, "eps = abc"}}, 1, ":9", "eps", NULL, "is not a number"},
   {"not an integer", {{2, "dim = two"}}, 1, ":2", "dim", NULL, "is not an integer"},
   {"out of range", {{9, "eps = 1.5"}}, 1, ":9", "eps", NULL, "out of range (0, 1]"},
-  {"bad enum", {{APPEND, "container = box"}}, 1, ":16", "container", NULL, "shaker, periodic"},
+  {"bad enum", {{APPEND, "container = crate"}}, 1, ":16", "container", NULL, "shaker, periodic, box"},
   {"bad stall_action", {{APPEND, "stall_action = halt"}}, 1, ":16", "stall_action", NULL,
    "warn, stop"},
   {"negative stall_rate", {{APPEND, "stall_rate = -1"}}, 1, ":16", "stall_rate", NULL,

@@ -61,6 +61,45 @@ check "without a field: no field_work, e_par or e_perp series, no shear_* parame
   bash -c "! h5ls '$tmp/c.h5/observables' | grep -qE 'field_work|e_par|e_perp' && ! h5dump -A -g /parameters '$tmp/c.h5' | grep -q shear && h5dump -A -g /parameters '$tmp/c.h5' | grep -q grazing_angle"
 check "--help lists shear_force, shear_bins, shear_on, shear_off" \
   bash -c "[ \$('$run' --help 2>&1 | grep -cE '^  shear_(force|bins|on|off) ') -eq 4 ]"
+# container = box: the sheared systems of Ch. 7-8 (floor and lid at rest, lateral axes periodic)
+cat > "$tmp/box.ini" <<'EOF'
+engine = ed
+dim = 3
+container = box
+n = 720
+lx = 12
+ly = 12
+height = 7.5
+sigma_p = 0
+s_crit = 0.0625
+e_cb_mgs = 6
+tg_init = 40
+seed = 1
+t_end = 20
+dt_series = 0.5
+dt_snapshot = 1
+shear_force = 2
+dt_checkpoint = 0
+EOF
+"$run" "$tmp/box.ini" -q -o "$tmp/box.h5" 2> /dev/null; rc=$?
+check "a sheared box (walls at rest): every snapshot within R <= z <= height - R, grains hit the walls, which do no work, ledger < 1e-9" \
+  "$py" - "$tmp/box.h5" <<'EOF'
+import sys, h5py, numpy as np
+f = h5py.File(sys.argv[1])
+z = f['/particles/all/position/value'][:, :, 2]; r = f['/particles/all/diameter'][:] / 2
+assert z.shape[0] == 21 and np.all(z >= r - 1e-9) and np.all(z <= 7.5 - r + 1e-9), (z.min(), z.max())
+assert f['/observables/wall_hits/value'][-1] > 1000
+assert np.all(f['/observables/injected_wall/value'][:] == 0)
+assert f['/observables/ledger_residual/value'][:].max() < 1e-9
+assert np.all(f['/observables/walls/floor/value'][:] == 0) and np.all(f['/observables/walls/lid/value'][:] == 7.5)
+EOF
+grep -v shear_force "$tmp/box.ini" > "$tmp/box_still.ini"
+"$run" "$tmp/box_still.ini" engine=td -o "$tmp/boxtd.h5" 2> "$tmp/boxtd.err"; rc=$?
+check "container = box with engine = td is refused, naming both keys" \
+  bash -c "[ $rc -ne 0 ] && grep -q \"'container' and 'engine'\" '$tmp/boxtd.err' && [ ! -e '$tmp/boxtd.h5' ]"
+"$run" "$tmp/box.ini" gamma=5 -o "$tmp/boxg.h5" 2> "$tmp/boxg.err"; rc=$?
+check "container = box with gamma is refused (walls at rest)" \
+  bash -c "[ $rc -ne 0 ] && grep -q \"'gamma'\" '$tmp/boxg.err'"
 "$run" "$scenes/shake2d.ini" shear_force=1 t_end=1 profile_start=0 -q -o "$tmp/d.h5" 2> "$tmp/d.err"; rc=$?
 check "a 2D shaker with a field: exit $rc, one line naming shear_force and container" \
   bash -c "[ $rc -ne 0 ] && [ \$(wc -l < '$tmp/d.err') -eq 1 ] && grep -q \"'shear_force' and 'container'\" '$tmp/d.err' && [ ! -e '$tmp/d.h5' ]"
