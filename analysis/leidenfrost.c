@@ -32,6 +32,7 @@ typedef struct options {
   double from, to;   /* time window [sqrt(d/g)] */
   double swing;      /* a turning point counts once h_I has moved this far back [d]; 0: auto */
   double hole;       /* bubbling: a column below this share of the mean grains */
+  double last;       /* profiles: only the last this many tops and bottoms (0: all) */
 } options;
 
 /* One run's height maps. */
@@ -408,7 +409,9 @@ static int mode_profiles(const options *o, int nfile, char **files)
     if (track_run(&h, o, &tr)) return 1;
     double *top = calloc((size_t)h.nb, sizeof(double)), *bot = calloc((size_t)h.nb, sizeof(double));
     long nt = 0, nb = 0;
-    for (long j = 0; j < tr.m; j++) {
+    /* the last --last tops and as many bottoms (all with 0) */
+    long j0 = o->last > 0 && 2 * o->last < tr.m ? tr.m - 2 * o->last : 0;
+    for (long j = j0; j < tr.m; j++) {
       const double *f = h.phi + (size_t)tr.frame[tr.tp[j]] * h.nb;
       double *acc = tr.kind[j] > 0 ? top : bot;
       for (int k = 0; k < h.nb; k++) acc[k] += f[k];
@@ -451,7 +454,7 @@ static void usage(FILE *out)
     "               sqrt(kappa T_g/m) of the dilute gas (phi < 0.1) below and above the plug,\n"
     "               in d/T_driv\n"
     "  profiles     phi(z) averaged over the frames of the top and of the bottom turning\n"
-    "               points (Fig. 6.4)\n"
+    "               points (Fig. 6.4; --last K: the last K of each)\n"
     "  bubbling     runs with lateral maps too (map_bins): the first lateral-map frame whose\n"
     "               emptiest column holds less than --hole of the mean grains (a gas bubble\n"
     "               through the plug, Fig. 6.12), the plug's height h_p then and L/(pi h_p)\n"
@@ -462,7 +465,9 @@ static void usage(FILE *out)
     "  --to T          last frame time (default: the run's end)\n"
     "  --min-swing D   a turning point counts once h_i has moved D back (default: 30 %% of\n"
     "                  h_i's 10-90 percentile range over the window, at least 2 d)\n"
-    "  --hole X        bubbling: a column with less than X of the mean grains (default 0.5)\n");
+    "  --hole X        bubbling: a column with less than X of the mean grains (default 0.5)\n"
+    "  --last K        profiles: the last K top and K bottom turning points only (the thesis\n"
+    "                  averages eight consecutive ones; default 0: all in the window)\n");
 }
 
 int main(int argc, char **argv)
@@ -486,7 +491,7 @@ int main(int argc, char **argv)
     }
     double *dst = !strcmp(a, "--phi-c") ? &o.phi_c : !strcmp(a, "--from") ? &o.from
                 : !strcmp(a, "--to") ? &o.to : !strcmp(a, "--min-swing") ? &o.swing
-                : !strcmp(a, "--hole") ? &o.hole : NULL;
+                : !strcmp(a, "--hole") ? &o.hole : !strcmp(a, "--last") ? &o.last : NULL;
     if (!dst) {
       fprintf(stderr, PROG ": unknown option %s (see --help)\n", a);
       return 2;
@@ -494,8 +499,9 @@ int main(int argc, char **argv)
     if (wg_arg_double(a, argv[++i], dst)) return 2;
   }
   if (!(o.phi_c > 0 && o.phi_c < 1) || !(o.swing >= 0) || !(o.to >= o.from) ||
-      !(o.hole > 0 && o.hole < 1)) {
-    fprintf(stderr, PROG ": need 0 < --phi-c < 1, --min-swing >= 0, --to >= --from and 0 < --hole < 1\n");
+      !(o.hole > 0 && o.hole < 1) || !(o.last >= 0 && o.last == floor(o.last))) {
+    fprintf(stderr, PROG ": need 0 < --phi-c < 1, --min-swing >= 0, --to >= --from, 0 < --hole < 1 "
+            "and a whole --last >= 0\n");
     return 2;
   }
   if (i >= argc) {

@@ -109,6 +109,9 @@ check "profiles: at the tops phi = 0.62 on 61-79 d and the gas below, at the bot
   awk -F'\t' 'NR > 1 { z = $2; if (z > 61 && z < 79 && ($3 < 0.615 || $3 > 0.625)) bad++;
     if (z > 41 && z < 59 && ($4 < 0.615 || $4 > 0.625)) bad++; if (z > 1 && z < 39 && $3 > 0.05) bad++; n++ }
     END { exit !(n == 808 && bad == 0) }' "$tmp/prof.tsv"
+"$tool" profiles --from 20 --last 3 "$tmp/s.h5" > "$tmp/prof3.tsv"
+check "profiles --last 3: three tops and three bottoms averaged" \
+  awk -F'\t' 'NR == 2 { exit !($5 == 3 && $6 == 3) }' "$tmp/prof3.tsv"
 "$tool" interface --from 25 --to 25 "$tmp/s.h5" > "$tmp/if.tsv"
 check "interface at t = 25 (h_I = 50): h_i 50 +- 0.25, h_top 70 +- 0.25" \
   bash -c "near $(col h_i "$tmp/if.tsv") 50 0.25 && near $(col h_top "$tmp/if.tsv") 70 0.25"
