@@ -150,64 +150,17 @@ static void melt_start(const data *d, double start[3])
   }
 }
 
-/* Reads columns xname, yname of a TSV (header line; '#' lines skipped), keeping rows with
+/* Columns xname, yname of a table (wg_table_read_xy, strictly), keeping the rows with
    xmin <= x <= xmax and finite values. */
 static int read_table(const char *path, const char *xname, const char *yname, double xmin,
                       double xmax, data *d)
 {
-  FILE *f = wg_table_open(path);
-  if (!f) return 1;
-  char line[8192];
-  int xc = -1, yc = -1, lineno = 0, header = 0;
-  size_t cap = 0;
-  d->n = 0;
-  d->x = d->y = NULL;
-  while (fgets(line, sizeof line, f)) {
-    lineno++;
-    line[strcspn(line, "\r\n")] = 0;
-    if (line[0] == '#' || line[0] == 0) continue;
-    char *field[MAX_COLS];
-    int nf = 0;
-    for (char *tok = strtok(line, "\t"); tok && nf < MAX_COLS; tok = strtok(NULL, "\t")) field[nf++] = tok;
-    if (!header) {
-      for (int k = 0; k < nf; k++) {
-        if (!strcmp(field[k], xname)) xc = k;
-        if (!strcmp(field[k], yname)) yc = k;
-      }
-      if (xc < 0 || yc < 0) {
-        fprintf(stderr, "wetgran-fit: %s:%d: no column '%s' in the header\n", path, lineno,
-                xc < 0 ? xname : yname);
-        if (f != stdin) fclose(f);
-        return 1;
-      }
-      header = 1;
-      continue;
-    }
-    if (xc >= nf || yc >= nf) {
-      fprintf(stderr, "wetgran-fit: %s:%d: too few fields\n", path, lineno);
-      if (f != stdin) fclose(f);
-      return 1;
-    }
-    char *e1, *e2;
-    double x = strtod(field[xc], &e1), y = strtod(field[yc], &e2);
-    if (*e1 || *e2) {
-      fprintf(stderr, "wetgran-fit: %s:%d: '%s' or '%s' is not a number\n", path, lineno,
-              field[xc], field[yc]);
-      if (f != stdin) fclose(f);
-      return 1;
-    }
-    if (!isfinite(x) || !isfinite(y) || x < xmin || x > xmax) continue;
-    if (d->n == cap) {
-      cap = cap ? 2 * cap : 64;
-      d->x = realloc(d->x, sizeof *d->x * cap);
-      d->y = realloc(d->y, sizeof *d->y * cap);
-      if (!d->x || !d->y) return 1;
-    }
-    d->x[d->n] = x;
-    d->y[d->n] = y;
-    d->n++;
-  }
-  if (f != stdin) fclose(f);
+  wg_xy t;
+  if (wg_table_read_xy(path, xname, yname, 1, &t)) return 1;
+  d->n = 0, d->x = t.x, d->y = t.y;
+  for (size_t i = 0; i < t.n; i++)
+    if (isfinite(t.x[i]) && isfinite(t.y[i]) && t.x[i] >= xmin && t.x[i] <= xmax)
+      d->x[d->n] = t.x[i], d->y[d->n++] = t.y[i];
   return 0;
 }
 

@@ -1259,45 +1259,12 @@ static int mode_powerfit(const char *path, const options *o)
     fprintf(stderr, PROG ": powerfit needs --x COL and --y COL\n");
     return 2;
   }
-  FILE *f = wg_table_open(path);
-  if (!f) return 1;
-  char line[8192];
-  int xc = -1, yc = -1, header = 0, lineno = 0;
-  size_t cap = 0;
-  pdata d = {0, NULL, NULL};
-  while (fgets(line, sizeof line, f)) {
-    lineno++;
-    line[strcspn(line, "\r\n")] = 0;
-    if (line[0] == '#' || !line[0]) continue;
-    char *fld[MAX_COLS];
-    int nfld = 0;
-    for (char *t = strtok(line, "\t"); t && nfld < MAX_COLS; t = strtok(NULL, "\t")) fld[nfld++] = t;
-    if (!header) {
-      for (int k = 0; k < nfld; k++) {
-        if (!strcmp(fld[k], o->xcol)) xc = k;
-        if (!strcmp(fld[k], o->ycol)) yc = k;
-      }
-      if (xc < 0 || yc < 0) {
-        fprintf(stderr, PROG ": %s:%d: no column '%s' in the header\n", path, lineno, xc < 0 ? o->xcol : o->ycol);
-        if (f != stdin) fclose(f);
-        return 1;
-      }
-      header = 1;
-      continue;
-    }
-    if (xc >= nfld || yc >= nfld) continue;
-    double x = strtod(fld[xc], NULL), y = strtod(fld[yc], NULL);
-    if (!(x > o->xmin && x <= o->xmax) || !isfinite(y) || y <= 0) continue;
-    if (d.n == cap) {
-      cap = cap ? 2 * cap : 64;
-      d.x = realloc(d.x, sizeof(double) * cap);
-      d.y = realloc(d.y, sizeof(double) * cap);
-      if (!d.x || !d.y) return 1;
-    }
-    d.x[d.n] = x;
-    d.y[d.n++] = y;
-  }
-  if (f != stdin) fclose(f);
+  wg_xy t;
+  if (wg_table_read_xy(path, o->xcol, o->ycol, 0, &t)) return 1;
+  pdata d = {0, t.x, t.y};
+  for (size_t i = 0; i < t.n; i++)
+    if (t.x[i] > o->xmin && t.x[i] <= o->xmax && isfinite(t.y[i]) && t.y[i] > 0)
+      d.x[d.n] = t.x[i], d.y[d.n++] = t.y[i];
   if (d.n < 3) {
     fprintf(stderr, PROG ": %s: %zu points with %g < %s <= %g and %s > 0, fewer than 3\n", path, d.n,
             o->xmin, o->xcol, o->xmax, o->ycol);

@@ -40,7 +40,7 @@ typedef struct hmaps {
   int dim, nb;
   long nf, n;
   double z0, w, area;        /* first slab's bottom, slab width, lateral area (2D: length) */
-  double t_driv, e_cb, estar, gamma, v_bead;
+  double t_driv, e_cb, estar, gamma, g, v_bead;
   double *t, *phi, *num, *temp; /* nf, nf x nb each */
 } hmaps;
 
@@ -67,6 +67,7 @@ static int load(const char *file, hmaps *h)
            wg_run_param(f, file, "lx", &lx, 1) | (dim == 3 ? wg_run_param(f, file, "ly", &ly, 1) : 0);
   wg_run_param(f, file, "t_driv", &h->t_driv, 0), wg_run_param(f, file, "e_cb", &h->e_cb, 0);
   wg_run_param(f, file, "estar", &h->estar, 0), wg_run_param(f, file, "gamma", &h->gamma, 0);
+  if (wg_run_param(f, file, "gravity", &h->g, 0), !(h->g > 0)) h->g = 1; /* wetgran-run's default */
   int rank;
   hsize_t d[8];
   if (!rc && (wg_h5_dims(f, "/observables/heights/packing_fraction/value", &rank, d) != WG_OK ||
@@ -237,12 +238,12 @@ static int mode_interface(const options *o, int nfile, char **files)
   return 0;
 }
 
-static double mean_of(const double *x, long n, long stride, double *sd)
+static double mean_of(const double *x, long n, double *sd)
 {
   double s = 0, s2 = 0;
   long c = 0;
   for (long i = 0; i < n; i++) {
-    double v = x[i * stride];
+    double v = x[i];
     if (isfinite(v)) s += v, s2 += v * v, c++;
   }
   double m = c ? s / c : NAN;
@@ -278,7 +279,7 @@ static int mode_oscillation(const options *o, int nfile, char **files)
     /* the window's statistics over whole cycles: from the first turning point to the last */
     long a = m >= 2 ? tr.tp[0] : 0, b = m >= 2 ? tr.tp[m - 1] : n - 1;
     long nw = b >= a ? b - a + 1 : 0;
-    double sd_h0, h0 = mean_of(tr.hi + a, nw, 1, &sd_h0);
+    double sd_h0, h0 = mean_of(tr.hi + a, nw, &sd_h0);
     double cycles = isfinite(tp) && tp > 0 && nw > 1 ? (h.t[tr.frame[b]] - h.t[tr.frame[a]]) / tp : 0;
     double h0_err = cycles >= 1 ? sd_h0 / sqrt(cycles) : NAN;
     double ngas = 0, hp = 0, phip = 0, above = 0, tb = 0, ta = 0, eps2 = 0;
@@ -297,7 +298,7 @@ static int mode_oscillation(const options *o, int nfile, char **files)
        kappa = (D + 2) / D (5/3 in 3D) */
     double kappa = (h.dim + 2.0) / h.dim;
     double vex = 4 * ngas * h.v_bead;
-    double om_th = sqrt(kappa / h0 * (1 + vex / (h.area * h0)));
+    double om_th = sqrt(kappa * h.g / h0 * (1 + vex / (h.area * h0)));
     double om = 2 * M_PI / tp, om_err = 2 * M_PI * tp_err / (tp * tp);
     /* its error from h0's: omega_th ~ h0^(-1/2) at least (more with the excluded volume) */
     double rel_th = isfinite(h0_err) ? 0.5 * h0_err / h0 : NAN;
@@ -309,7 +310,7 @@ static int mode_oscillation(const options *o, int nfile, char **files)
       double *d = malloc(sizeof(double) * m);
       for (long j = 1; j < m; j++) d[j - 1] = 0.5 * fabs(tr.hi[tr.tp[j]] - tr.hi[tr.tp[j - 1]]);
       double sd;
-      amp = mean_of(d, m - 1, 1, &sd);
+      amp = mean_of(d, m - 1, &sd);
       amp_cv = sd / amp;
       free(d);
     }

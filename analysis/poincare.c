@@ -47,19 +47,6 @@ typedef struct series {
 
 static void series_free(series *s) { free(s->t), free(s->x), s->n = 0; }
 
-static int push(series *s, long *cap, double t, double x)
-{
-  if (s->n == *cap) {
-    long c = *cap ? 2 * *cap : 1024;
-    double *a = realloc(s->t, sizeof(double) * c), *b = a ? realloc(s->x, sizeof(double) * c) : NULL;
-    if (a) s->t = a;
-    if (!b) return 1;
-    s->x = b, *cap = c;
-  }
-  s->t[s->n] = t, s->x[s->n++] = x;
-  return 0;
-}
-
 /* A run file's /observables/<column>/{time,value}. */
 static int load_h5(const char *file, const options *o, series *s)
 {
@@ -87,66 +74,22 @@ static int load_h5(const char *file, const options *o, series *s)
   return rc;
 }
 
-/* A table with a header: the time column and the value column by name. */
+/* A table: the time and value columns by name (rows without a time are skipped). */
 static int load_table(const char *file, const options *o, series *s)
 {
-  FILE *in = strcmp(file, "-") ? wg_table_open(file) : stdin;
-  if (!in) return 1;
-  char line[65536];
-  int ct = -1, cx = -1, rc = 0;
-  long cap = 0, lineno = 0;
-  while (fgets(line, sizeof line, in)) {
-    lineno++;
-    if (line[0] == '#' || line[0] == '\n') continue;
-    char *save = NULL, *tok;
-    int k = 0;
-    if (ct < 0 && cx < 0) { /* the header */
-      for (tok = strtok_r(line, "\t\n", &save); tok; tok = strtok_r(NULL, "\t\n", &save), k++) {
-        if (!strcmp(tok, o->time)) ct = k;
-        if (!strcmp(tok, o->column)) cx = k;
-      }
-      if (ct < 0 || cx < 0) {
-        fprintf(stderr, PROG ": %s: line %ld: the header has no column '%s'\n", file, lineno,
-                ct < 0 ? o->time : o->column);
-        rc = 1;
-        break;
-      }
-      continue;
-    }
-    double t = NAN, x = NAN;
-    for (tok = strtok_r(line, "\t\n", &save); tok; tok = strtok_r(NULL, "\t\n", &save), k++) {
-      char *end;
-      double v = strtod(tok, &end);
-      if (end == tok) v = NAN;
-      if (k == ct) t = v;
-      if (k == cx) x = v;
-    }
-    if (!isfinite(t)) {
-      fprintf(stderr, PROG ": %s: line %ld: column '%s' is not a number\n", file, lineno, o->time);
-      rc = 1;
-      break;
-    }
-    if (push(s, &cap, t, x)) {
-      fprintf(stderr, PROG ": %s: no memory\n", file);
-      rc = 1;
-      break;
-    }
-  }
-  if (!rc && ct < 0) {
-    fprintf(stderr, PROG ": %s: empty table\n", file);
-    rc = 1;
-  }
-  if (in != stdin) fclose(in);
-  return rc;
+  wg_xy t;
+  if (wg_table_read_xy(file, o->time, o->column, 0, &t)) return 1;
+  s->t = t.x, s->x = t.y, s->n = 0;
+  for (size_t i = 0; i < t.n; i++)
+    if (isfinite(t.x[i])) s->t[s->n] = t.x[i], s->x[s->n++] = t.y[i];
+  return 0;
 }
 
 static int load(const char *file, const options *o, series *s)
 {
   memset(s, 0, sizeof *s);
-  FILE *f = strcmp(file, "-") ? fopen(file, "rb") : NULL;
-  unsigned char sig[8] = {0};
-  int h5 = f && fread(sig, 1, 8, f) == 8 && sig[0] == 0x89 && sig[1] == 'H' && sig[2] == 'D';
-  if (f) fclose(f);
+  int h5 = wg_input_is_h5(file);
+  if (h5 < 0) return 1;
   int rc = h5 ? load_h5(file, o, s) : load_table(file, o, s);
   if (rc) series_free(s);
   return rc;
@@ -196,20 +139,10 @@ static long section(const series *s, const options *o, double *mt, double *mx)
     swing = fmax(wg_auto_swing(y, n, 0.1, 0), 8 * noise);
   }
   long k = swing > 0 ? wg_turning_points(y, n, swing, idx, kind) : 0;
-  for (long j = 0; j < k; j++) {
-    if (kind[j] != -1) continue; /* cycles from minimum to minimum */
-    long next = -1;
-    for (long q = j + 1; q < k; q++)
-      if (kind[q] == -1) {
-        next = q;
-        break;
-      }
-    if (next < 0) break;
-    long best = -1;
-    for (long i = idx[j]; i <= idx[next]; i++)
-      if (isfinite(y[i]) && (best < 0 || y[i] > y[best])) best = i;
-    if (best >= 0) mt[m] = s->t[best], mx[m++] = y[best];
-  }
+  /* turning points alternate, and the maximum between two minima is the largest value of
+     the smoothed series between them (the hysteresis tracks it until the fall) */
+  for (long j = 0; j + 2 < k; j++)
+    if (kind[j] == -1) mt[m] = s->t[idx[j + 1]], mx[m++] = y[idx[j + 1]];
   free(y), free(idx), free(kind);
   return m;
 }

@@ -3,6 +3,7 @@
 
 #include <errno.h>
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 
@@ -83,6 +84,12 @@ hid_t wg_run_open(const char *path)
   return f;
 }
 
+int wg_input_is_h5(const char *path)
+{
+  if (!strcmp(path, "-")) return 0;
+  return classify(path, "input");
+}
+
 FILE *wg_table_open(const char *path)
 {
   if (!strcmp(path, "-")) return stdin;
@@ -107,4 +114,73 @@ int wg_run_param(hid_t f, const char *file, const char *key, double *v, int requ
     return required;
   }
   return 0;
+}
+
+int wg_table_read_xy(const char *path, const char *xname, const char *yname, int strict,
+                     wg_xy *t)
+{
+  *t = (wg_xy){0, NULL, NULL};
+  FILE *f = wg_table_open(path);
+  if (!f) return 1;
+  char *line = NULL, where[4200];
+  size_t len = 0, cap = 0;
+  int xc = -1, yc = -1, header = 0, rc = 0;
+  long lineno = 0;
+  while (!rc && getline(&line, &len, f) >= 0) {
+    lineno++;
+    snprintf(where, sizeof where, "%s:%ld", path, lineno);
+    line[strcspn(line, "\r\n")] = 0;
+    if (line[0] == '#' || !line[0]) continue;
+    char *save = NULL, *xs = NULL, *ys = NULL;
+    int k = 0;
+    for (char *tok = strtok_r(line, "\t", &save); tok; tok = strtok_r(NULL, "\t", &save), k++) {
+      if (!header) {
+        if (xc < 0 && !strcmp(tok, xname)) xc = k;
+        if (yc < 0 && !strcmp(tok, yname)) yc = k;
+        continue;
+      }
+      if (k == xc) xs = tok;
+      if (k == yc) ys = tok;
+    }
+    if (!header) {
+      if (xc < 0 || yc < 0)
+        rc = wg_error(WG_EINVAL, where, "no column '%s' in the header", xc < 0 ? xname : yname) != 0;
+      header = 1;
+      continue;
+    }
+    char *ex = NULL, *ey = NULL;
+    double x = xs ? strtod(xs, &ex) : NAN, y = ys ? strtod(ys, &ey) : NAN;
+    if (strict && (!xs || !ys)) {
+      rc = wg_error(WG_EINVAL, where, "too few fields") != 0;
+      break;
+    }
+    if (strict && (*ex || *ey)) {
+      rc = wg_error(WG_EINVAL, where, "'%s' or '%s' is not a number", xs, ys) != 0;
+      break;
+    }
+    if (xs && *ex) x = NAN;
+    if (ys && *ey) y = NAN;
+    if (t->n == cap) {
+      cap = cap ? 2 * cap : 256;
+      double *a = realloc(t->x, sizeof(double) * cap), *b = a ? realloc(t->y, sizeof(double) * cap) : NULL;
+      if (a) t->x = a;
+      if (!b) {
+        rc = wg_error(WG_ENOMEM, path, "no memory for %zu rows", cap) != 0;
+        break;
+      }
+      t->y = b;
+    }
+    t->x[t->n] = x, t->y[t->n++] = y;
+  }
+  if (!rc && !header) rc = wg_error(WG_EINVAL, path, "no header line: not a table") != 0;
+  free(line);
+  if (f != stdin) fclose(f);
+  if (rc) wg_xy_free(t);
+  return rc;
+}
+
+void wg_xy_free(wg_xy *t)
+{
+  free(t->x), free(t->y);
+  *t = (wg_xy){0, NULL, NULL};
 }
