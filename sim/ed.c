@@ -474,6 +474,18 @@ static void predict_pairs_sheared(const wg_ed *s, long i, const long *cells, int
 static void predict_pairs_resting(const wg_ed *s, long i, const long *cells, int ncells,
                                   candidate *best) __attribute__((cold, noinline));
 
+/* A loop LOOP(DIM, WET) compiled for each (dim, wet), the one of the scene run. */
+#define BY_DIM_WET(s, LOOP)                                                                  \
+  do {                                                                                       \
+    if ((s)->dim == 3) {                                                                     \
+      if ((s)->wet) LOOP(3, 1);                                                              \
+      else LOOP(3, 0);                                                                       \
+    } else {                                                                                 \
+      if ((s)->wet) LOOP(2, 1);                                                              \
+      else LOOP(2, 0);                                                                       \
+    }                                                                                        \
+  } while (0)
+
 /* The loop over the neighbours, specialised for each (dim, wet). */
 #define PAIRS_IN(DIM, WET)                                                                   \
   do {                                                                                       \
@@ -497,13 +509,32 @@ static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncel
   probe pr;
   probe_at_now(s, i, &pr);
   const int32_t *head = s->cells.head, *next = s->cells.next;
-  if (s->dim == 3) {
-    if (s->wet) PAIRS_IN(3, 1);
-    else PAIRS_IN(3, 0);
-  } else {
-    if (s->wet) PAIRS_IN(2, 1);
-    else PAIRS_IN(2, 0);
-  }
+  BY_DIM_WET(s, PAIRS_IN);
+}
+
+/* Every pair of particle i with its listed neighbours (neighbour lists). */
+#define PAIRS_LISTED(DIM, WET)                                                               \
+  do {                                                                                       \
+    for (int k = 0; k < m; k++) predict_pair(s, &pr, nb[k], best, DIM, WET);               \
+  } while (0)
+
+static void predict_pairs_listed(const wg_ed *s, long i, candidate *best)
+{
+  probe pr;
+  probe_at_now(s, i, &pr);
+  const int32_t *nb = s->nl.nb + (size_t)i * s->nl.cap;
+  int m = s->nl.nn[i];
+  BY_DIM_WET(s, PAIRS_LISTED);
+}
+
+/* The events of one pair (i, j). */
+static void predict_pairs_of(const wg_ed *s, long i, long j, candidate *best)
+{
+  probe pr;
+  probe_at_now(s, i, &pr);
+#define ONE_PAIR(DIM, WET) predict_pair(s, &pr, j, best, DIM, WET)
+  BY_DIM_WET(s, ONE_PAIR);
+#undef ONE_PAIR
 }
 
 /* The pair (i, j) while the field acts: particles in different bins (or of different
@@ -885,7 +916,16 @@ static void predict_cell(wg_ed *s, long i, int skip_axis, int skip_dir)
   s->ev[i].dir = (int8_t)dir;
 }
 
-/* Every event of particle i afresh: walls, all pairs in the surrounding cells, next cell. */
+/* When particle i leaves the region around its list centre (neighbour lists). */
+static void predict_relist(wg_ed *s, long i)
+{
+  const wg_particle *p = &s->p[i];
+  double t = p->t + wg_nlist_exit_time(&s->nl, i, p->r, p->v, s->g, s->now - p->t);
+  s->ev[i].t_cell = t > s->now ? t : s->now;
+}
+
+/* Every event of particle i afresh: walls, all pairs in the surrounding cells (or its list),
+   next cell crossing (or relist). */
 static void predict_all(wg_ed *s, long i, int reschedule)
 {
   candidate best = {INFINITY, WG_EV_NONE, -1};
@@ -895,10 +935,16 @@ static void predict_all(wg_ed *s, long i, int reschedule)
   else if (s->nwalls)
     predict_walls(s, i, &best);
   if (SHEARED(s)) predict_bin(s, i, &best);
-  int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
-  predict_pairs_in(s, i, stencil, m, &best);
-  set_phys(s, i, &best);
-  predict_cell(s, i, -1, 0);
+  if (s->listed) {
+    predict_pairs_listed(s, i, &best);
+    set_phys(s, i, &best);
+    predict_relist(s, i);
+  } else {
+    int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
+    predict_pairs_in(s, i, stencil, m, &best);
+    set_phys(s, i, &best);
+    predict_cell(s, i, -1, 0);
+  }
   if (reschedule) schedule(s, i);
 }
 
@@ -1135,6 +1181,77 @@ static void cell_crossing(wg_ed *s, long i)
   schedule(s, i);
 }
 
+/* List particle i (slot) anew around its centre: every j whose centre is within
+   r_i + r_max + s_crit + shell of it (r_max: the largest radius, so that the scan reads only
+   the centres), found in the cells' stencil.  later_only: only j > i (all lists built at once,
+   each pair once).  With `old` (i's previous list, nold entries) every j not in it is a new
+   pair, whose events are considered into *best. */
+static int list_neighbours(wg_ed *s, long i, int later_only, const int32_t *old, int nold,
+                           candidate *best)
+{
+  long stencil[27];
+  int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
+  const int32_t *head = s->cells.head, *next = s->cells.next;
+  const double *ci = s->nl.centre + 3 * i;
+  double cut = s->p[i].radius + s->nl.r_max + s->s_crit + s->nl.shell, cut2 = cut * cut;
+  for (int k = 0; k < m; k++)
+    for (int32_t j = head[stencil[k]]; j >= 0; j = next[j]) {
+      if (j == i || (later_only && j < i)) continue;
+      const double *cj = s->nl.centre + 3 * j;
+      double r2 = 0;
+      for (int a = 0; a < s->dim; a++) {
+        double x = cj[a] - ci[a];
+        if (s->periodic[a]) x = min_image(x, 0.5 * s->box[a], s->box[a]);
+        r2 += x * x;
+      }
+      if (r2 >= cut2) continue;
+      int st = wg_nlist_link(&s->nl, s->n, i, j);
+      if (st != WG_OK) return st;
+      if (!old) continue;
+      int q = 0;
+      while (q < nold && old[q] != j) q++;
+      if (q == nold) predict_pairs_of(s, i, j, best);
+    }
+  return WG_OK;
+}
+
+/* Particle i has reached the edge of its region: its centre moves to where it is (wrapped
+   into the box), its cell and list follow.  Its trajectory is unchanged, so its predicted
+   event and the others' predictions with it stand: only the pairs new to its list can bring
+   an earlier event. */
+static int relist(wg_ed *s, long i)
+{
+  wg_particle *p = &s->p[i];
+  s->counts.cell_crossings++;
+  advance(s, i, s->now);
+  for (int k = 0; k < s->dim; k++)
+    if (s->periodic[k]) {
+      if (p->r[k] >= s->box[k]) p->r[k] -= s->box[k];
+      else if (p->r[k] < 0) p->r[k] += s->box[k];
+    }
+  int nold = s->nl.nn[i];
+  int32_t old_small[64], *old = old_small;
+  if (nold > 64 && !(old = malloc((size_t)nold * sizeof *old)))
+    return wg_error(WG_ENOMEM, "engine", "no memory to relist particle %ld", i);
+  memcpy(old, s->nl.nb + (size_t)i * s->nl.cap, (size_t)nold * sizeof *old);
+  wg_nlist_unlink_all(&s->nl, i);
+  double *c = s->nl.centre + 3 * i;
+  for (int k = 0; k < s->dim; k++) c[k] = p->r[k];
+  long cell = wg_cells_locate(&s->cells, c);
+  if (cell != s->cells.cell[i]) {
+    wg_cells_remove(&s->cells, i);
+    wg_cells_insert(&s->cells, i, cell);
+  }
+  candidate best = {s->ev[i].t_phys, s->ev[i].type, s->ev[i].partner};
+  int st = list_neighbours(s, i, 0, old, nold, &best);
+  if (old != old_small) free(old);
+  if (st != WG_OK) return st;
+  if (best.t < s->ev[i].t_phys) set_phys(s, i, &best);
+  predict_relist(s, i);
+  schedule(s, i);
+  return WG_OK;
+}
+
 static int physical_event(wg_ed *s, long i)
 {
   long j = s->ev[i].partner;
@@ -1239,7 +1356,12 @@ static int advance_events(wg_ed *s, double t_stop)
     }
     s->now = t;
     if (s->ev[i].t_cell <= s->ev[i].t_phys) {
-      cell_crossing(s, i);
+      if (s->listed) {
+        int st = relist(s, i);
+        if (st != WG_OK) return st;
+      } else {
+        cell_crossing(s, i);
+      }
     } else {
       int st = physical_event(s, i);
       if (st != WG_OK) return st;
@@ -1357,6 +1479,15 @@ int wg_ed_synchronize(wg_ed *s)
   int st = renumber_by_cell(s);
   if (st != WG_OK) return st;
   wg_cells_rebuild(&s->cells, s->n, s->p[0].r, sizeof(wg_particle) / sizeof(double));
+  if (s->listed) {
+    wg_nlist_clear(&s->nl, s->n);
+    for (long i = 0; i < s->n; i++)
+      for (int k = 0; k < 3; k++) s->nl.centre[3 * i + k] = k < s->dim ? s->p[i].r[k] : 0;
+    for (long i = 0; i < s->n; i++) {
+      st = list_neighbours(s, i, 1, NULL, 0, NULL);
+      if (st != WG_OK) return st;
+    }
+  }
   if (s->sheared)
     for (long i = 0; i < s->n; i++) s->bin[i] = wg_shear_bin_of(s->shear, s->p[i].r[0]);
   for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
@@ -1453,6 +1584,10 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
                                sc->shear_off, 1) != WG_OK)
       fail = 1;
   }
+  if (sc->shell > 0) {
+    s->listed = 1;
+    if (wg_nlist_alloc(&s->nl, s->dim, n, sc->shell) != WG_OK) fail = 1;
+  }
   if (s->wet) {
     s->bond = zalloc((size_t)n * s->bond_cap, sizeof *s->bond, &fail);
     s->nbond = zalloc((size_t)n, sizeof *s->nbond, &fail);
@@ -1483,7 +1618,8 @@ static int setup_cells(wg_ed *s)
   for (long i = 0; i < s->n; i++)
     if (2 * s->p[i].radius > dmax) dmax = 2 * s->p[i].radius;
   double lo[3] = {0, 0, 0}, len[3] = {s->box[0], s->box[1], s->box[2]};
-  double range = dmax + s->s_crit;
+  if (s->listed) s->nl.r_max = 0.5 * dmax;
+  double range = dmax + s->s_crit + (s->listed ? s->nl.shell : 0);
   if (s->nwalls) {
     lo[s->up] = -s->wall[0].A;
     len[s->up] = s->box[s->up] + 2 * s->wall[0].A;
@@ -1589,6 +1725,7 @@ size_t wg_ed_bytes(const wg_ed *s)
   if (s->riding) bytes += n * sizeof *s->riding;
   if (s->wet) bytes += n * ((size_t)s->bond_cap * sizeof *s->bond + sizeof *s->nbond);
   if (s->shear) bytes += n * sizeof *s->bin + (size_t)s->shear->nbins * sizeof(double);
+  if (s->listed) bytes += wg_nlist_bytes(&s->nl, s->n);
   return bytes;
 }
 
@@ -1599,6 +1736,7 @@ void wg_ed_free(wg_ed *s)
   if (s->shear) wg_shear_free(s->shear);
   free(s->shear);
   wg_cells_free(&s->cells);
+  if (s->listed) wg_nlist_free(&s->nl);
   wg_evqueue_free(&s->queue);
   memset(s, 0, sizeof *s);
 }

@@ -9,6 +9,7 @@
 
 #include "cells.h"
 #include "evqueue.h"
+#include "nlist.h"
 #include "scene.h"
 #include "shear.h"
 #include "wall.h"
@@ -25,7 +26,7 @@ typedef struct wg_particle {
    writes of a particle besides its trajectory, in one 32-byte record (half a cache line). */
 typedef struct wg_evrec {
   double t_phys;           /* earliest physical event */
-  double t_cell;           /* next cell crossing */
+  double t_cell;           /* next cell crossing (with neighbour lists: next relist) */
   int32_t partner;         /* partner particle, or wall index, or bin step */
   uint32_t partner_count;  /* the partner's count when the event was predicted */
   uint32_t count;          /* this particle's trajectory changes (validates others' predictions) */
@@ -47,7 +48,8 @@ typedef enum {
 /* Counts of every event type; the ledger of energy. */
 typedef struct wg_counts {
   unsigned long long collisions, captures, ruptures, reflections, wall_hits, wall_enters,
-      cell_crossings, stale,  /* stale: popped predictions whose partner had moved on */
+      cell_crossings,         /* bookkeeping events: cell crossings, or relists (shell > 0) */
+      stale,                  /* popped predictions whose partner had moved on */
       rigid,                  /* collisions at one instant in a rigid cluster (RIGID_TIME) */
       grazing,                /* bridge reflections raised to GRAZING_ANGLE */
       bin_crossings,          /* crossings between the shear field's bins */
@@ -109,7 +111,12 @@ typedef struct wg_ed {
   double *key;                 /* min(t_phys, t_cell) of ev[]: the queue's leaves, kept apart so
                                   that a group of 8 is one cache line */
 
-  wg_cells cells;
+  wg_cells cells;              /* with neighbour lists: of the list centres */
+  /* Neighbour lists (scene key shell > 0; nlist.h): each particle's events come from its list,
+     and it is listed anew (a "relist", in place of cell crossings) when it leaves the region
+     around its list centre.  listed = 0: the cells' stencils and cell crossings instead. */
+  int listed;
+  wg_nlist nl;
   wg_evqueue queue;
   double now;                  /* time of the event being processed */
   wg_counts counts;

@@ -64,7 +64,7 @@ typedef struct {
 
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
-  K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_REST_SPEED, K_GAMMA, K_ESTAR,
+  K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_REST_SPEED, K_SHELL, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_INIT_JITTER, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_MAP_BINS, K_MAP_BINS_Y, K_MAP_START,
   K_DT_MAP, K_MAP_SAMPLES, K_HEIGHT_BINS, K_HEIGHT_START, K_DT_HEIGHT, K_HEIGHT_SAMPLES,
@@ -149,6 +149,11 @@ static const key_desc keys[NKEYS] = {
                     "acceleration exceeds -g, comes to rest: the particle rides the floor until "
                     "its acceleration falls to -g (docs/engines.md); 0 = off", NULL, 0, 0,
                     ONLY_ED},
+  [K_SHELL] = {"shell", T_DOUBLE, OFF(shell), 0, 10, MAX_EXCL, DEF_VALUE, 0, NULL, "d",
+               "neighbour lists: each particle lists the others within sigma_ij + s_crit + "
+               "shell of it and is listed anew when it has moved shell/2 (docs/engines.md, "
+               "\"Neighbour lists\"); 0 = the cells' stencils and cell crossings", NULL, 0, 0,
+               ONLY_ED},
   [K_GAMMA] = {"gamma", T_DOUBLE, OFF(gamma), 0, INF, MIN_EXCL | MAX_EXCL, DEF_COND, 0,
                "required (shaker)", "1", "reduced acceleration Gamma = A w^2 / g (Eq. 2.19)",
                NULL, 0, 0},
@@ -843,6 +848,18 @@ static int check_rest(const wg_scene *sc)
   return WG_OK;
 }
 
+/* Neighbour lists follow free flights under gravity; the shear field's and the resting
+   grains' paths keep the cells. */
+static int check_shell(const wg_scene *sc)
+{
+  if (sc->shell == 0) return WG_OK;
+  if (sc->shear_force != 0)
+    return pair_error(sc, K_SHELL, K_SHEAR_FORCE, "neighbour lists are not combined with the shear field");
+  if (sc->rest_speed != 0)
+    return pair_error(sc, K_SHELL, K_REST_SPEED, "neighbour lists are not combined with resting on the floor");
+  return WG_OK;
+}
+
 /* The shear field: its bins (default one per diameter) and its times; in 2D it acts along
    the second axis, which must then be periodic (no walls to meet a force along them). */
 static int resolve_shear(wg_scene *sc)
@@ -1092,7 +1109,7 @@ int wg_scene_finish(wg_scene *sc)
   if ((rc = check_required(sc)) || (rc = resolve_box(sc)) || (rc = resolve_gravity(sc)) ||
       (rc = resolve_engine(sc)) || (rc = resolve_bridge(sc)) || (rc = resolve_driving(sc)) ||
       (rc = resolve_temperature(sc)) || (rc = check_fill(sc)) || (rc = resolve_output_times(sc)) ||
-      (rc = check_packing(sc)) || (rc = resolve_shear(sc)) || (rc = check_rest(sc)) ||
+      (rc = check_packing(sc)) || (rc = resolve_shear(sc)) || (rc = check_rest(sc)) || (rc = check_shell(sc)) ||
       (rc = check_box(sc)))
     return rc;
   return WG_OK;

@@ -80,4 +80,22 @@ check "resting layer: resumed run is byte-identical to the uninterrupted one" cm
 check "rest_speed in a periodic box: non-zero exit, both keys named" \
   bash -c "[ $rc -ne 0 ] && grep -q \"'rest_speed'\" '$tmp/err_rest' && grep -q \"'container'\" '$tmp/err_rest' && [ ! -e '$tmp/bad_rest.h5' ]"
 
+# Neighbour lists (shell): a wet 3D shaker twice identical, and killed after its second
+# checkpoint and resumed, identical too (the lists are rebuilt from the state at each checkpoint).
+lists="$scenes/shake3d_5_2c.ini n=400 lx=12 ly=12 shell=0.3 t_end=6 dt_series=0.5 dt_snapshot=3
+  profile_bins=0 profile_start=0 dt_checkpoint=2"
+listin() { local dir=$1; shift; mkdir -p "$dir" && (cd "$dir" && "$run" $lists -q --no-volatile "$@" -o run.h5 2> err); }
+listin "$tmp/la"
+listin "$tmp/lb"
+check "neighbour lists: two runs byte-identical" cmp -s "$tmp/la/run.h5" "$tmp/lb/run.h5"
+listin "$tmp/lr" --abort-after-checkpoint 2; rc=$?
+check "neighbour lists: aborted after its second checkpoint (exit $rc)" test "$rc" -eq 3
+listin "$tmp/lr"
+check "neighbour lists: resumed run is byte-identical to the uninterrupted one" cmp -s "$tmp/la/run.h5" "$tmp/lr/run.h5"
+check "neighbour lists: ledger closes" bash -c "grep -oE 'ledger_residual=[^ ]+' '$tmp/la/err' | \
+  awk -F= '{ n++; ok = (\$2 < 1e-9) } END { exit !(n == 1 && ok) }'"
+"$run" "$scenes/shear3d.ini" shell=0.3 -o "$tmp/bad_shell.h5" 2> "$tmp/err_shell"; rc=$?
+check "shell with the shear field: non-zero exit, both keys named" \
+  bash -c "[ $rc -ne 0 ] && grep -q \"'shell'\" '$tmp/err_shell' && grep -q \"'shear_force'\" '$tmp/err_shell' && [ ! -e '$tmp/bad_shell.h5' ]"
+
 summary

@@ -1,7 +1,9 @@
 /* Elastic hard disks and spheres in a periodic box: the pressure from the collision virial
    against the Henderson (2D) and Carnahan-Starling (3D) equations of state, energy
    conservation over 10^7 collisions, and a dilute gas on the coarse cells of dilute boxes
-   (collision frequency against Enskog's, no overlap at the end). */
+   (collision frequency against Enskog's, no overlap at the end).  The same with neighbour
+   lists (scene key shell): the equation of state, energy and momentum, Enskog's frequency, and
+   no overlap in a dense gas, where a pair left out of the lists would pass through. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,14 +11,18 @@
 #include "ed.h"
 #include "tharness.h"
 
+/* shell > 0: neighbour lists with that shell */
+static double shell = 0;
+
 static int gas_scene(wg_scene *sc, int dim, long n, double phi, unsigned seed)
 {
-  char d[32], nn[32], ph[32], sd[32];
+  char d[32], nn[32], ph[32], sd[32], sh[32];
   snprintf(d, sizeof d, "dim=%d", dim);
   snprintf(nn, sizeof nn, "n=%ld", n);
   snprintf(ph, sizeof ph, "phi=%.17g", phi);
   snprintf(sd, sizeof sd, "seed=%u", seed);
-  const char *keys[] = {d, nn, ph, sd, "container=periodic", "sigma_p=0", "tg_init_abs=1",
+  snprintf(sh, sizeof sh, "shell=%.17g", shell);
+  const char *keys[] = {d, nn, ph, sd, sh, "container=periodic", "sigma_p=0", "tg_init_abs=1",
                         "t_end=1", NULL};
   wg_scene_init(sc);
   for (int k = 0; keys[k]; k++)
@@ -50,10 +56,9 @@ static double carnahan_starling(double eta)
   return (1 + eta + eta * eta - eta * eta * eta) / pow(1 - eta, 3);
 }
 
-static void equation_of_state(void)
+static void equation_of_state(const double *phis, int nphi)
 {
-  const double phis[] = {0.1, 0.2, 0.3, 0.4};
-  for (int k = 0; k < 4; k++) {
+  for (int k = 0; k < nphi; k++) {
     double z2 = measure_z(2, 900, phis[k], 20, 150);
     double h = henderson(phis[k]);
     TH_CHECK(fabs(z2 / h - 1) < 0.02, "2D phi = %.1f: Z = %.4f vs Henderson %.4f (%.2f %%, band 2 %%)",
@@ -66,9 +71,8 @@ static void equation_of_state(void)
   }
 }
 
-static void energy_conservation(void)
+static void energy_conservation(unsigned long long target)
 {
-  const unsigned long long target = getenv("WG_TEST_SHORT") ? 1000000ULL : 10000000ULL;
   wg_scene sc;
   gas_scene(&sc, 3, 2000, 0.3, 11);
   wg_ed s;
@@ -88,6 +92,54 @@ static void energy_conservation(void)
   wg_ed_free(&s);
 }
 
+/* The closest distance of any pair at time now (unit diameters: < 1 is an overlap). */
+static double closest_pair(const wg_ed *s)
+{
+  double worst = INFINITY;
+  for (long i = 0; i < s->n; i++)
+    for (long j = i + 1; j < s->n; j++) {
+      double ri[3], rj[3], v[3], d2 = 0;
+      wg_ed_position_at(s, i, s->now, ri, v);
+      wg_ed_position_at(s, j, s->now, rj, v);
+      for (int k = 0; k < s->dim; k++) {
+        double x = rj[k] - ri[k];
+        x -= s->box[k] * nearbyint(x / s->box[k]);
+        d2 += x * x;
+      }
+      if (d2 < worst) worst = d2;
+    }
+  return sqrt(worst);
+}
+
+/* Neighbour lists in a dense gas: every sampled instant, no pair closer than a diameter (a
+   pair missing from the lists would pass through), and lists symmetric. */
+static void dense_lists(int dim, long n, double phi)
+{
+  wg_scene sc;
+  gas_scene(&sc, dim, n, phi, 17);
+  wg_ed s;
+  TH_CHECK(wg_ed_alloc(&s, &sc) == WG_OK && s.listed, "%dD gas at phi = %.2f with lists set up", dim, phi);
+  double closest = INFINITY;
+  int symmetric = 1;
+  for (int k = 1; k <= 20; k++) {
+    wg_ed_advance(&s, 0.5 * k);
+    double c = closest_pair(&s);
+    if (c < closest) closest = c;
+    for (long i = 0; i < s.n; i++)
+      for (int q = 0; q < s.nl.nn[i]; q++) {
+        long j = s.nl.nb[(size_t)i * s.nl.cap + q];
+        int back = 0;
+        for (int m = 0; m < s.nl.nn[j]; m++) back |= s.nl.nb[(size_t)j * s.nl.cap + m] == i;
+        symmetric &= back;
+      }
+  }
+  TH_CHECK(closest > 1 - 1e-9 && s.counts.cell_crossings > (unsigned long long)n,
+           "%dD phi = %.2f with lists: closest pair over 20 instants %.12f d (>= 1 - 1e-9); %llu "
+           "collisions, %llu relists", dim, phi, closest, s.counts.collisions, s.counts.cell_crossings);
+  TH_CHECK(symmetric, "%dD phi = %.2f: every listed pair is in both lists", dim, phi);
+  wg_ed_free(&s);
+}
+
 /* A dilute gas (phi = 0.005, as the thesis's free cooling, Fig. 2.6) gets cells wider than the
    interaction range (at most 8 per particle, ed.c setup_cells).  Its collision frequency per
    particle must be Enskog's, omega = 2 (dim - 1) n sigma^(dim-1) g(sigma) sqrt(pi T / m) with the
@@ -102,7 +154,7 @@ static void dilute_gas(int dim, long n, double t_end)
   TH_CHECK(wg_ed_alloc(&s, &sc) == WG_OK, "%dD dilute gas set up", dim);
   double range_cells = 1;
   for (int k = 0; k < dim; k++) range_cells *= floor(s.box[k]);
-  TH_CHECK(s.cells.ncell <= 8 * n && s.cells.ncell < range_cells,
+  TH_CHECK(s.cells.ncell <= 8 * n && (shell > 0 || s.cells.ncell < range_cells),
            "%dD dilute gas: %ld cells for %ld particles (one range wide: %.0f)", dim, s.cells.ncell, n,
            range_cells);
   wg_ed_advance(&s, t_end);
@@ -117,29 +169,26 @@ static void dilute_gas(int dim, long n, double t_end)
   TH_CHECK(fabs(measured / omega - 1) < 5 * err,
            "%dD dilute gas: collision frequency %.5f vs Enskog %.5f (%+.2f %%, band 5 sigma = %.1f %%, %llu collisions)",
            dim, measured, omega, 100 * (measured / omega - 1), 500 * err, s.counts.collisions);
-  double worst = INFINITY;
-  for (long i = 0; i < n; i++)
-    for (long j = i + 1; j < n; j++) {
-      double ri[3], rj[3], v[3], d2 = 0;
-      wg_ed_position_at(&s, i, s.now, ri, v);
-      wg_ed_position_at(&s, j, s.now, rj, v);
-      for (int k = 0; k < dim; k++) {
-        double x = rj[k] - ri[k];
-        x -= s.box[k] * nearbyint(x / s.box[k]);
-        d2 += x * x;
-      }
-      if (d2 < worst) worst = d2;
-    }
-  TH_CHECK(sqrt(worst) > 1 - 1e-9, "%dD dilute gas: closest pair at the end %.12f d (>= 1 - 1e-9)", dim,
-           sqrt(worst));
+  double closest = closest_pair(&s);
+  TH_CHECK(closest > 1 - 1e-9, "%dD dilute gas: closest pair at the end %.12f d (>= 1 - 1e-9)", dim,
+           closest);
   wg_ed_free(&s);
 }
 
 int main(void)
 {
-  equation_of_state();
-  energy_conservation();
+  int quick = getenv("WG_TEST_SHORT") != NULL;
+  const double phis[] = {0.1, 0.2, 0.3, 0.4};
+  equation_of_state(phis, 4);
+  energy_conservation(quick ? 1000000ULL : 10000000ULL);
   dilute_gas(3, 2000, 400);
   dilute_gas(2, 900, 1200);
+  printf("# neighbour lists (shell = 0.4)\n");
+  shell = 0.4;
+  equation_of_state(phis + 2, 2);
+  energy_conservation(1000000ULL);
+  dilute_gas(3, 2000, 400);
+  dense_lists(3, 2000, 0.45);
+  dense_lists(2, 900, 0.6);
   return th_summary();
 }

@@ -60,13 +60,13 @@ static void resting_below_gamma_one(void)
   wg_ed_free(&s);
 }
 
-static void gamma_thousand(void)
+static void gamma_thousand(const char *shell)
 {
   const char *keys[] = {"dim=2", "n=200", "lx=50", "height=12", "s_crit=0.0711", "f_b=4",
-                        "eps=0.9", "gamma=1000", "estar=50", "seed=2", "t_end=20", NULL};
+                        "eps=0.9", "gamma=1000", "estar=50", "seed=2", "t_end=20", shell, NULL};
   wg_scene sc;
-  TH_CHECK(scene(&sc, keys) == 0, "Gamma = 1000 scene accepted (A = %.3g d, w = %.4g)",
-           sc.amplitude, sc.omega);
+  TH_CHECK(scene(&sc, keys) == 0, "Gamma = 1000 scene accepted (A = %.3g d, w = %.4g, %s)",
+           sc.amplitude, sc.omega, shell);
   wg_ed s;
   TH_CHECK(wg_ed_alloc(&s, &sc) == WG_OK, "set up");
   double overlap = 0, worst = 0, highest;
@@ -117,12 +117,13 @@ static void entry_below_clock_resolution(void)
    grains on the floor (rest_speed), which switches on the cells' turn_back rule; without it
    (every other scene, engine version c450a5b3a17e0edb) a grain that turned round in a cell
    keeps that cell until its next physical event and these two pass through each other unseen
-   (docs/engines.md, "Cell crossings under gravity"). */
-static void fall_through_cells(void)
+   (docs/engines.md, "Cell crossings under gravity").  Neighbour lists (shell) have no cell
+   crossings: they must see the meeting too, the bystanders falling freely. */
+static void fall_through_cells(const char *rule)
 {
   enum { NB = 60 };
   const char *keys[] = {"dim=2", "n=62", "lx=200", "height=40", "sigma_p=0", "gamma=0.5",
-                        "estar_d=1e-4", "tg_init_abs=0", "rest_speed=0.01", "seed=1", "t_end=100",
+                        "estar_d=1e-4", "tg_init_abs=0", rule, "seed=1", "t_end=100",
                         NULL};
   wg_scene sc;
   TH_CHECK(scene(&sc, keys) == 0, "tall box scene accepted");
@@ -147,17 +148,19 @@ static void fall_through_cells(void)
     wg_ed_position_at(&s, s.slot[0], s.now, a, va);
     wg_ed_position_at(&s, s.slot[1], s.now, c, vc);
     TH_CHECK(st == WG_OK && s.counts.collisions == 1 && c[1] - a[1] > 1 - 1e-9,
-             "start %.2f: the falling grain meets the rising one (%llu collision, height "
-             "difference %.6f >= 1 just after)", zb, s.counts.collisions, c[1] - a[1]);
+             "%s, start %.2f: the falling grain meets the rising one (%llu collision, height "
+             "difference %.6f >= 1 just after)", rule, zb, s.counts.collisions, c[1] - a[1]);
     wg_ed_free(&s);
   }
 }
 
 int main(void)
 {
-  fall_through_cells();
+  fall_through_cells("rest_speed=0.01");
+  fall_through_cells("shell=0.4");
   resting_below_gamma_one();
-  gamma_thousand();
+  gamma_thousand("shell=0");
+  gamma_thousand("shell=0.3");
   entry_below_clock_resolution();
   return th_summary();
 }

@@ -3,6 +3,7 @@
 # Usage: tests/bench/run.sh BENCH_BIN_DIR TOOL_BIN_DIR.  Writes tests/bench/out/bench.tsv.
 # BENCH_ONLY=peers runs only the comparison with EDMD and the baseline engine (peers.sh, which
 # reads EDMD_SRC, BENCH_BASE, REPS, SCAN_MAX); BENCH_ONLY=rest only the resting beds (rest.sh);
+# BENCH_ONLY=lists only neighbour lists against cells (lists.sh, REPS);
 # BENCH_ONLY=td_shaker only the last part
 # (time-driven shaker: Verlet and Gear).
 set -eu
@@ -40,6 +41,12 @@ if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = peers ]; then
 echo "== the event-driven engine beside EDMD and beside its own baseline commit (tests/bench/peers.sh)"
 "$here/peers.sh" "$bindir"
 [ "${BENCH_ONLY:-}" = peers ] && exit 0
+fi
+
+if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = lists ]; then
+echo "== neighbour lists (shell) against cells, same build (tests/bench/lists.sh)"
+"$here/lists.sh" "$bindir"
+[ "${BENCH_ONLY:-}" = lists ] && exit 0
 fi
 
 if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = rest ]; then
