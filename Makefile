@@ -29,11 +29,15 @@ else
   BIN := bin
 endif
 
-ALL_CFLAGS := $(BASE_CFLAGS) -Isim $(HDF5_CFLAGS) -DWG_CFLAGS='"$(BASE_CFLAGS)"'
+# sim/: common/ (below both engines), ed/ and td/ (each engine's modules), run/ (run files,
+# observers, the run tool); headers are found by name
+SIM_DIRS := common ed td run
+ALL_CFLAGS := $(BASE_CFLAGS) $(patsubst %,-Isim/%,$(SIM_DIRS)) $(HDF5_CFLAGS) -DWG_CFLAGS='"$(BASE_CFLAGS)"'
 LIBS := $(HDF5_LIBS) -lgsl -lgslcblas -lm $(LDSAN)
 
-LIB_SRC := $(filter-out sim/run_main.c,$(wildcard sim/*.c))
+LIB_SRC := $(filter-out sim/run/run_main.c,$(wildcard $(patsubst %,sim/%/*.c,$(SIM_DIRS))))
 LIB_OBJ := $(patsubst sim/%.c,$(BUILD)/sim/%.o,$(LIB_SRC))
+SIM_HDR := $(wildcard $(patsubst %,sim/%/*.h,$(SIM_DIRS)))
 LIB := $(BUILD)/libwetgran.a
 ANALYSIS_SRC := $(wildcard analysis/*.c)
 TOOLS := $(BIN)/wetgran-run $(patsubst analysis/%.c,$(BIN)/wetgran-%,$(ANALYSIS_SRC))
@@ -73,11 +77,13 @@ engine-version: deps
 	  if [ "$$v" = "$$c" ]; then echo "engine version $$v (as committed in sim/ENGINE_VERSION)"; \
 	  else echo "engine version $$v, committed $$c: the engine's trajectories changed; write $$v to sim/ENGINE_VERSION and say so in the commit (records of $$c stay usable; make check-archive FIG=<id> tests them against today's engine)"; exit 1; fi
 
-$(BUILD)/sim/%.o: sim/%.c $(wildcard sim/*.h) | $(BUILD)/sim
+$(BUILD)/sim/%.o: sim/%.c $(SIM_HDR) | $(BUILD)/sim
+	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -c $< -o $@
 
 # the version string alone is rebuilt when the git state changes
-$(BUILD)/sim/wg_error.o: sim/wg_error.c sim/wg.h $(BUILD)/version.txt | $(BUILD)/sim
+$(BUILD)/sim/common/wg_error.o: sim/common/wg_error.c sim/common/wg.h $(BUILD)/version.txt | $(BUILD)/sim
+	@mkdir -p $(@D)
 	$(CC) $(ALL_CFLAGS) -DWG_GIT_VERSION='"$(GIT_VERSION)"' -c $< -o $@
 
 $(BUILD)/version.txt: FORCE | $(BUILD)/sim
@@ -87,7 +93,7 @@ FORCE:
 $(LIB): $(LIB_OBJ)
 	ar rcs $@.tmp $^ && mv $@.tmp $@
 
-$(BIN)/wetgran-run: $(BUILD)/sim/run_main.o $(LIB) | $(BIN)
+$(BIN)/wetgran-run: $(BUILD)/sim/run/run_main.o $(LIB) | $(BIN)
 	$(CC) $(ALL_CFLAGS) $^ $(LIBS) -o $@
 
 $(BIN)/wetgran-%: analysis/%.c $(LIB) | $(BIN)

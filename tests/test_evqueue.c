@@ -1,4 +1,4 @@
-/* The event queue (sim/evqueue.c, a tournament tree of fan-out 8) against a brute-force scan:
+/* The event queue (sim/ed/evqueue.c, a tournament tree of fan-out 8) against a brute-force scan:
    after every update the top must be the particle of the earliest time, the lowest index
    among equal times (the order of events, and so every trajectory, depends on it).  Sizes
    around the powers of the fan-out, times drawn from few values so that ties abound, and

@@ -1,4 +1,4 @@
-/* Tests of sim/io_h5.c: round trips of every writer/reader, row blocks, attribute overwrite,
+/* Tests of sim/common/io_h5.c: round trips of every writer/reader, row blocks, attribute overwrite,
    the H5MD layout, empty datasets, byte-identical files, timestamps off, and error reports. */
 #define _POSIX_C_SOURCE 200809L
 

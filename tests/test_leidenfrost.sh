@@ -1,5 +1,5 @@
 #!/bin/bash
-# Height maps (height_bins, dt_height: /observables/heights, sim/maps.c) and wetgran-leidenfrost
+# Height maps (height_bins, dt_height: /observables/heights, sim/run/maps.c) and wetgran-leidenfrost
 # reading them (thesis Ch. 6): every grain's volume counted once (exact slices), the packing
 # fraction the snapshots give, no effect on the trajectory, a resumed run byte-identical; the
 # tool on synthetic maps with a known plug period, cushion height and gas, Eq. 6.5 as

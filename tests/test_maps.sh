@@ -1,5 +1,5 @@
 #!/bin/bash
-# Lateral maps (map_bins, dt_map: /observables/maps, sim/maps.c) and wetgran-interface reading
+# Lateral maps (map_bins, dt_map: /observables/maps, sim/run/maps.c) and wetgran-interface reading
 # them: every particle counted once per sample, the bridges of the series, the same field as
 # the snapshots give on the same cells and instants, a resumed run byte-identical, no effect
 # on the trajectory, an unfinished window leaving no frame, the 2D row of cells.

@@ -1,4 +1,4 @@
-/* Tests of sim/scene.c: a good scene and its derived driving, the three bridge-energy
+/* Tests of sim/common/scene.c: a good scene and its derived driving, the three bridge-energy
    forms, overrides, a periodic scene given by phi, and every class of bad input (the error
    message, captured from stderr, must name the file, the line and the key). */
 #define _POSIX_C_SOURCE 200809L

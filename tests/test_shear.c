@@ -1,4 +1,4 @@
-/* Tests of sim/shear.c: the cosine shear field's bins and the exact quartic contact times of
+/* Tests of sim/ed/shear.c: the cosine shear field's bins and the exact quartic contact times of
    two particles with constant relative acceleration (thesis Sec. 2.4.4, footnote 6).
 
    Independent reference.  It shares no idea with the solver (no critical points, no cubic,

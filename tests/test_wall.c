@@ -1,4 +1,4 @@
-/* Tests of sim/wall.c: exact contact times of a ballistic particle with a sinusoidally
+/* Tests of sim/common/wall.c: exact contact times of a ballistic particle with a sinusoidally
    moving wall (thesis App. B, Eq. B.7).
 
    Independent reference.  The reference root finder shares no code or idea with the

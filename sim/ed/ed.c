@@ -47,16 +47,6 @@ static void *zalloc(size_t n, size_t size, int *fail)
 }
 
 
-double wg_ksum_value(const wg_ksum *k) { return k->s + k->c; }
-
-/* Neumaier's compensated sum: value = s + c. */
-static void ksum_add(wg_ksum *k, double x)
-{
-  double t = k->s + x;
-  if (fabs(k->s) >= fabs(x)) k->c += (k->s - t) + x;
-  else k->c += (x - t) + k->s;
-  k->s = t;
-}
 
 static inline double dot(const double *a, const double *b, int dim)
 {
@@ -154,7 +144,7 @@ typedef void path_fn(const wg_ed *s, long i, double t, double *r, double *v);
    floor's), booking the work `work` done on it meanwhile into `account`. */
 static void advance_on(wg_ed *s, long i, double t, path_fn *path, wg_ksum *account, double work)
 {
-  ksum_add(account, work);
+  wg_ksum_add(account, work);
   double r[3], v[3];
   path(s, i, t, r, v);
   set_reference(s, i, t, r, v);
@@ -1001,11 +991,11 @@ static void normal_kick(wg_ed *s, long i, long j, const double *n, double du)
     double vw = wg_wall_velocity(&s->wall[0], s->now);
     if (s->riding[i]) {
       s->p[i].v[s->up] = vi;
-      ksum_add(&s->ledger.injected_wall, wg_ed_mass(s, i) * ki * n[s->up] * vw);
+      wg_ksum_add(&s->ledger.injected_wall, wg_ed_mass(s, i) * ki * n[s->up] * vw);
     }
     if (s->riding[j]) {
       s->p[j].v[s->up] = vj;
-      ksum_add(&s->ledger.injected_wall, -wg_ed_mass(s, j) * kj * n[s->up] * vw);
+      wg_ksum_add(&s->ledger.injected_wall, -wg_ed_mass(s, j) * kj * n[s->up] * vw);
     }
   }
 }
@@ -1041,12 +1031,12 @@ static int collide(wg_ed *s, long i, long j)
     double hop = fmax(s->rest_speed, s->wall_min_speed);
     if (-e * un < hop) {
       du = hop - un;
-      ksum_add(&s->ledger.injected_wall, 0.5 * mu * (hop * hop - e * e * un * un));
+      wg_ksum_add(&s->ledger.injected_wall, 0.5 * mu * (hop * hop - e * e * un * un));
     }
   }
   normal_kick(s, i, j, n, du);
   s->virial -= dist * (1 + e) * mu * un; /* sigma |J| */
-  if (e < 1) ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
+  if (e < 1) wg_ksum_add(&s->ledger.dissipated_coll, 0.5 * mu * (1 - e * e) * un * un); /* Eq. 2.6 */
   s->counts.collisions++;
   if (s->wet && !wg_ed_bonded(s, i, j)) {
     int st = bond_add_one(s, i, j);
@@ -1070,7 +1060,7 @@ static void bridge_edge(wg_ed *s, long i, long j)
   if (0.5 * mu * un * un > s->e_cb) {
     bond_remove_one(s, i, j);
     bond_remove_one(s, j, i);
-    ksum_add(&s->ledger.dissipated_rupt, s->e_cb);
+    wg_ksum_add(&s->ledger.dissipated_rupt, s->e_cb);
     s->counts.ruptures++;
     normal_kick(s, i, j, n, sqrt(un * un - 2 * s->e_cb / mu) - un);
     return;
@@ -1109,8 +1099,8 @@ static void come_to_rest(wg_ed *s, long i, double vw)
   double m = wg_ed_mass(s, i), v = p->v[s->up], u = v - vw;
   double z = wg_wall_position(&s->wall[0], s->now) + p->radius;
   double loss = 0.5 * m * u * u;
-  ksum_add(&s->ledger.injected_wall, 0.5 * m * (vw * vw - v * v) + m * s->g * (z - p->r[s->up]) + loss);
-  ksum_add(&s->ledger.dissipated_wall, loss);
+  wg_ksum_add(&s->ledger.injected_wall, 0.5 * m * (vw * vw - v * v) + m * s->g * (z - p->r[s->up]) + loss);
+  wg_ksum_add(&s->ledger.dissipated_wall, loss);
   p->r[s->up] = z;
   p->v[s->up] = vw;
   if (s->t_last) s->t_last[i] = s->now;
@@ -1152,8 +1142,8 @@ static void wall_collide(wg_ed *s, long i, int w)
   }
   if ((v_after - vw) * side < s->wall_min_speed) v_after = vw + side * s->wall_min_speed;
   p->v[s->up] = v_after;
-  ksum_add(&s->ledger.injected_wall, 0.5 * m * (v_after * v_after - v * v) + loss);
-  if (loss > 0) ksum_add(&s->ledger.dissipated_wall, loss);
+  wg_ksum_add(&s->ledger.injected_wall, 0.5 * m * (v_after * v_after - v * v) + loss);
+  if (loss > 0) wg_ksum_add(&s->ledger.dissipated_wall, loss);
   s->counts.wall_hits++;
 }
 

@@ -8,6 +8,9 @@
 
 static inline double td_mass(const wg_td *s, long i) { return s->mass ? s->mass[i] : 1.0; }
 
+/* Kahan's sum, whose compensated value is s - c; wg_ksum_value reads s + c, so the
+   time-driven ledger's sums are only as good as plain ones (docs/engines.md, "Where wetgran
+   writes its own code"; wg_ksum_add's Neumaier sum at the next engine version). */
 static void ksum_add(wg_ksum *k, double x)
 {
   double y = x - k->c, t = k->s + y;

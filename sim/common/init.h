@@ -10,7 +10,8 @@
 #ifndef WG_INIT_H
 #define WG_INIT_H
 
-#include "ed.h"
+#include "particle.h"
+#include "scene.h"
 
 /* Fill p[0..n-1] (positions, velocities, radii; local times 0) and, if mass is non-NULL,
    the masses (m = d^dim). */

@@ -24,7 +24,9 @@
 
 #include "cells.h"
 #include "contact.h"
-#include "ed.h"   /* wg_ksum */
+#include "ksum.h"
+#include "particle.h"
+#include "scene.h"
 #include "friction.h"
 #include "wall.h"
 

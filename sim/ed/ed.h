@@ -8,19 +8,15 @@
 #define WG_ED_H
 
 #include "cells.h"
+#include "ksum.h"
+#include "particle.h"
 #include "evqueue.h"
 #include "nlist.h"
 #include "scene.h"
 #include "shear.h"
 #include "wall.h"
 
-/* One particle: 64 bytes, one cache line. */
-typedef struct wg_particle {
-  double r[3];     /* centre at local time t [d]; r[dim-1] is the height */
-  double v[3];     /* velocity at local time t [sqrt(g d)] */
-  double t;        /* local time [sqrt(d/g)] */
-  double radius;   /* [d] */
-} wg_particle;
+
 
 /* A particle's next events and the counter that validates them: what an event reads and
    writes of a particle besides its trajectory, in one 32-byte record (half a cache line). */
@@ -57,8 +53,7 @@ typedef struct wg_counts {
       lift_offs;              /* resting particles that left the floor */
 } wg_counts;
 
-/* Energy ledger [m g d], compensated (Kahan) sums. */
-typedef struct wg_ksum { double s, c; } wg_ksum;
+/* Energy ledger [m g d], compensated sums. */
 typedef struct wg_ledger {
   wg_ksum injected_wall;     /* work done by the moving walls */
   wg_ksum dissipated_coll;   /* lost in inelastic particle collisions */
@@ -185,7 +180,6 @@ double wg_ed_wall_work(const wg_ed *s);
 
 /* Kinetic and potential energy of the whole system at time now [m g d]. */
 void wg_ed_energy(const wg_ed *s, double *kinetic, double *potential);
-double wg_ksum_value(const wg_ksum *k);
 /* |E(now) - E(0) - injected + dissipated| / energy scale. */
 double wg_ed_ledger_residual(wg_ed *s);
 
