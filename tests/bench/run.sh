@@ -3,7 +3,8 @@
 # Usage: tests/bench/run.sh BENCH_BIN_DIR TOOL_BIN_DIR.  Writes tests/bench/out/bench.tsv.
 # BENCH_ONLY=peers runs only the comparison with EDMD and the baseline engine (peers.sh, which
 # reads EDMD_SRC, BENCH_BASE, REPS, SCAN_MAX); BENCH_ONLY=rest only the resting beds (rest.sh);
-# BENCH_ONLY=lists only neighbour lists against cells (lists.sh, REPS);
+# BENCH_ONLY=lists only neighbour lists against cells (lists.sh, REPS); BENCH_ONLY=rates only
+# the event rates (shakers, gas, the Leidenfrost column, the shear field's hooks, wall solver, td);
 # BENCH_ONLY=td_shaker only the last part
 # (time-driven shaker: Verlet and Gear).
 set -eu
@@ -55,7 +56,7 @@ echo "== resting beds: events per time unit resting (rest_speed), fluidized and 
 [ "${BENCH_ONLY:-}" = rest ] && exit 0
 fi
 
-if [ -z "${BENCH_ONLY:-}" ]; then
+if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = rates ]; then
 echo "== event rates (events: collisions, bridge ruptures/reflections, wall hits; cell crossings apart)"
 run "a_shake2d"            "$scenes/shake2d.ini" t_end=1000 profile_start=500 dt_checkpoint=0
 run "b_gas3d_N1e5_phi0.3"  "$scenes/gas3d.ini" n=100000 t_end=2
@@ -81,7 +82,7 @@ echo "== exact wall solver against the brute-force scan at T_driv/1000 (same tra
 "$benchdir/bench_wall" | tee "$out/bench_wall.tsv"
 echo "== time-driven engine: particle-steps/s of a 3D bed of 1e4 spheres; cost against event-driven for one state"
 "$benchdir/bench_td" | tee "$out/bench_td.tsv"
-
+[ "${BENCH_ONLY:-}" = rates ] && { echo "results: $tsv, $out/bench_wall.tsv, $out/bench_td.tsv"; exit 0; }
 fi
 
 echo "== time-driven 2D shaker: accuracy against cost for the time step dt = t_contact / k"
