@@ -43,10 +43,16 @@ $(OUT)/boundary.tsv: $(OUT)/sweep.tsv
 	      (s[v] + f[v]) / 2 * scale[v], (f[v] - s[v]) / 2 * scale[v]; \
 	    else printf "%s\tnan\tnan\tnan\tnan\n", v } }' $< > $@.tmp && mv $@.tmp $@
 
+# The line's errors: the fit's (scaled by its scatter) and the brackets' (each F_scrit uniform
+# within its bracket, standard deviation half-gap / sqrt 3, carried through the least-squares
+# weights) added in quadrature: on a coarse grid the midpoints can fall exactly on a line.
 $(OUT)/results.tsv: $(OUT)/boundary.tsv $(BIN)/wetgran-fit $(BIN)/wetgran-theory
 	{ echo -e "key\tvalue\terror"; \
 	  awk -F'\t' 'NR > 1 && $$4 == $$4 + 0 { print $$1 "\t" $$4 }' $< | \
-	    { echo -e "x\ty"; cat; } | $(BIN)/wetgran-fit --model line --x x --y y --prefix line - | awk -F'\t' '$$1 != "key"'; \
+	    { echo -e "x\ty"; cat; } | $(BIN)/wetgran-fit --model line --x x --y y --prefix line - | awk -F'\t' '$$1 != "key"' | \
+	    awk -F'\t' -v OFS='\t' 'NR == FNR { if (FNR > 1 && $$4 == $$4 + 0) { n++; x[n] = $$1; e[n] = $$5 / sqrt(3); sx += $$1; sxx += $$1 * $$1 }; next } \
+	      FNR == 1 { d = n * sxx - sx * sx; for (i = 1; i <= n; i++) { va += (e[i] * (sxx - x[i] * sx) / d) ^ 2; vb += (e[i] * (n * x[i] - sx) / d) ^ 2 } } \
+	      $$1 == "line_a" { $$3 = sqrt($$3 * $$3 + va) } $$1 == "line_b" { $$3 = sqrt($$3 * $$3 + vb) } { print }' $< -; \
 	  awk -F'\t' 'NR > 1 { n++; ok += $$4 == $$4 + 0 } END { printf "bracketed\t%d\tnan\n", (n > 0 && ok == n) }' $<; \
 	  $(EXTRA_RESULTS) \
 	} > $@.tmp && mv $@.tmp $@
