@@ -5,7 +5,8 @@
 # fluidized field (error: half their gap) and y = F_scrit L_x / d, divided by F_B when
 # PER_FB = 1; a line y = a + b x fitted through them (wetgran-fit), x = value * X_SCALE.  The
 # including Makefile sets SWEEP_KEY, PREFIX (runs are PREFIX<value>_F<fsmax>.h5), PER_FB, may set
-# X_SCALE (default 1) and may add lines to results.tsv through EXTRA_RESULTS (a shell command).
+# X_SCALE (default 1) and SWEEP_ARGS (the runs' arguments for the value $$V, default
+# SWEEP_KEY=$$V) and may add lines to results.tsv through EXTRA_RESULTS (a shell command).
 include ../common.mk
 
 SCENE := $(SCENES)/shear3d.ini
@@ -18,8 +19,10 @@ param = $$(h5dump -a /parameters/$(1) $(2) | awk '/\(0\)/ { print $$2 }')
 runs: $(RUNS)
 .PHONY: runs
 
+# the swept value's scene arguments, from the shell variable V (default: SWEEP_KEY=V)
+SWEEP_ARGS ?= $(SWEEP_KEY)=$$V
 $(RUNDIR)/$(PREFIX)%.h5: $(SCENE) $(CONF) $(ENGINE) | $(RUNDIR)
-	v=$*; $(WGRUN) $(SCENE) $(call conf,run) $(SWEEP_KEY)=$${v%%_F*} shear_force=$${v#*_F} -q -o $@
+	v=$*; V=$${v%%_F*}; $(WGRUN) $(SCENE) $(call conf,run) $(SWEEP_ARGS) shear_force=$${v#*_F} -q -o $@
 
 # one row per run: the swept value, F_smax, mean e_perp [m g d], coordination (2 B / N) over
 # t >= avg_from, the state, L_x and F_B of the run
