@@ -204,6 +204,16 @@ double wg_ed_wall_work(const wg_ed *s)
   return w;
 }
 
+/* Periodic coordinates of r into [0, box) (fmod is exact). */
+static void wrap_into_box(const wg_ed *s, double *r)
+{
+  for (int k = 0; k < s->dim; k++)
+    if (s->periodic[k]) {
+      r[k] = fmod(r[k], s->box[k]);
+      if (r[k] < 0) r[k] += s->box[k];
+    }
+}
+
 void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v)
 {
   const wg_particle *p = &s->p[i];
@@ -222,11 +232,7 @@ void wg_ed_position_at(const wg_ed *s, long i, double t, double *r, double *v)
       v[s->up] -= s->g * dt;
     }
   }
-  for (int k = 0; k < s->dim; k++)
-    if (s->periodic[k]) {
-      r[k] = fmod(r[k], s->box[k]);
-      if (r[k] < 0) r[k] += s->box[k];
-    }
+  wrap_into_box(s, r);
 }
 
 /* Separation dr = r_j - r_i (minimum image) and relative velocity dv = v_j - v_i at the
@@ -517,12 +523,10 @@ static void predict_pairs_listed(const wg_ed *s, long i, candidate *best)
   BY_DIM_WET(s, PAIRS_LISTED);
 }
 
-/* The events of one pair (i, j). */
-static void predict_pairs_of(const wg_ed *s, long i, long j, candidate *best)
+/* The events of one pair (probe, j). */
+static void predict_pair_of(const wg_ed *s, const probe *pr, long j, candidate *best)
 {
-  probe pr;
-  probe_at_now(s, i, &pr);
-#define ONE_PAIR(DIM, WET) predict_pair(s, &pr, j, best, DIM, WET)
+#define ONE_PAIR(DIM, WET) predict_pair(s, pr, j, best, DIM, WET)
   BY_DIM_WET(s, ONE_PAIR);
 #undef ONE_PAIR
 }
@@ -1175,9 +1179,9 @@ static void cell_crossing(wg_ed *s, long i)
    r_i + r_max + s_crit + shell of it (r_max: the largest radius, so that the scan reads only
    the centres), found in the cells' stencil.  later_only: only j > i (all lists built at once,
    each pair once).  With `old` (i's previous list, nold entries) every j not in it is a new
-   pair, whose events are considered into *best. */
+   pair, whose events, seen from the probe pr of i, are considered into *best. */
 static int list_neighbours(wg_ed *s, long i, int later_only, const int32_t *old, int nold,
-                           candidate *best)
+                           const probe *pr, candidate *best)
 {
   long stencil[27];
   int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
@@ -1200,7 +1204,7 @@ static int list_neighbours(wg_ed *s, long i, int later_only, const int32_t *old,
       if (!old) continue;
       int q = 0;
       while (q < nold && old[q] != j) q++;
-      if (q == nold) predict_pairs_of(s, i, j, best);
+      if (q == nold) predict_pair_of(s, pr, j, best);
     }
   return WG_OK;
 }
@@ -1214,11 +1218,7 @@ static int relist(wg_ed *s, long i)
   wg_particle *p = &s->p[i];
   s->counts.cell_crossings++;
   advance(s, i, s->now);
-  for (int k = 0; k < s->dim; k++)
-    if (s->periodic[k]) {
-      if (p->r[k] >= s->box[k]) p->r[k] -= s->box[k];
-      else if (p->r[k] < 0) p->r[k] += s->box[k];
-    }
+  wrap_into_box(s, p->r);
   int nold = s->nl.nn[i];
   int32_t old_small[64], *old = old_small;
   if (nold > 64 && !(old = malloc((size_t)nold * sizeof *old)))
@@ -1233,7 +1233,9 @@ static int relist(wg_ed *s, long i)
     wg_cells_insert(&s->cells, i, cell);
   }
   candidate best = {s->ev[i].t_phys, s->ev[i].type, s->ev[i].partner};
-  int st = list_neighbours(s, i, 0, old, nold, &best);
+  probe pr;
+  probe_at_now(s, i, &pr);
+  int st = list_neighbours(s, i, 0, old, nold, &pr, &best);
   if (old != old_small) free(old);
   if (st != WG_OK) return st;
   if (best.t < s->ev[i].t_phys) set_phys(s, i, &best);
@@ -1459,11 +1461,7 @@ int wg_ed_synchronize(wg_ed *s)
 {
   for (long i = 0; i < s->n; i++) {
     advance(s, i, s->now);
-    for (int k = 0; k < s->dim; k++)
-      if (s->periodic[k]) {
-        s->p[i].r[k] = fmod(s->p[i].r[k], s->box[k]);
-        if (s->p[i].r[k] < 0) s->p[i].r[k] += s->box[k];
-      }
+    wrap_into_box(s, s->p[i].r);
     s->ev[i].count = 0;
   }
   int st = renumber_by_cell(s);
@@ -1474,7 +1472,7 @@ int wg_ed_synchronize(wg_ed *s)
     for (long i = 0; i < s->n; i++)
       for (int k = 0; k < 3; k++) s->nl.centre[3 * i + k] = k < s->dim ? s->p[i].r[k] : 0;
     for (long i = 0; i < s->n; i++) {
-      st = list_neighbours(s, i, 1, NULL, 0, NULL);
+      st = list_neighbours(s, i, 1, NULL, 0, NULL, NULL);
       if (st != WG_OK) return st;
     }
   }
