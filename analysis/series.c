@@ -28,6 +28,13 @@ static const struct { const char *name, *unit, *what; } known[] = {
     {"cell_crossings", "1", "cell crossings since t = 0 (event-driven)"},
     {"steps", "1", "time steps since t = 0 (time-driven)"},
     {"list_rebuilds", "1", "neighbour-list rebuilds since t = 0 (time-driven)"},
+    {"field_work", "m g d", "work done by the shear field since t = 0 (event-driven, shear_force)"},
+    {"e_par", "m g d", "kinetic energy per particle along the shear force (Ch. 8: E_par)"},
+    {"e_perp", "m g d", "kinetic energy per particle across it, along x (Ch. 8: E_perp)"},
+    {"injected_noise", "m g d", "work done by the random force since t = 0 (event-driven, noise)"},
+    {"a2", "1", "Sonine coefficient a_2 of the velocities (Eq. A.32; with noise)"},
+    {"a2_free", "1", "a_2 of the grains without a bridge (with noise)"},
+    {"temperature_free", "m g d", "T_g of the grains without a bridge (with noise)"},
     {"temperature_ecb", "E_cb", "T_g / E_cb (wet runs, E_cb > 0 only)"},
 };
 #define NKNOWN (sizeof known / sizeof *known)

@@ -883,7 +883,10 @@ static int chain_eval(const void *params, wg_theory_result *r)
 
 /* ------------------------------------------------------------------------------------------
    a2: App. A, the first non-trivial Sonine (Laguerre) coefficient of the velocity
-   distribution of a wet granular gas driven by white noise, eps_cb = 2 E_cb/v0^2 = E_cb/T_g:
+   distribution of a wet granular gas driven by white noise.  eps_cb is the rule's (Eq. A.40:
+   a pair's normal speed leaves as sqrt(u^2 - eps_cb v0^2)), which for the model's loss of E_cb
+   is eps_cb = 4 E_cb/(m v0^2) = 2 E_cb/T_g; the printed 2 E_cb/v0^2 = E_cb/T_g would lose E_cb/2
+   (docs/appendix-a.md):
      Eq. A.59  a2 = -16 (eps - 2) eps / (-128 + 16 d (8 + eps (5 + eps))
                     + eps (10 + eps (75 + (eps - 4) eps)) + Z_s),
                Z_s = 32 (d - 1) eps exp(eps/4) K1(eps/4)   (GSL's scaled K1: no overflow)
@@ -895,7 +898,7 @@ typedef struct a2_params {
 } a2_params;
 
 static const wg_theory_key a2_keys[] = {
-    KEY(a2_params, eps_cb, 0.1, "dimensionless bridge energy eps_cb = 2 E_cb/v0^2 = E_cb/T_g (>= 0)"),
+    KEY(a2_params, eps_cb, 0.1, "dimensionless bridge energy eps_cb = 4 E_cb/(m v0^2) = 2 E_cb/T_g (Eq. A.40's; >= 0)"),
     KEY(a2_params, dim, 2, "dimension d (>= 2)"),
 };
 

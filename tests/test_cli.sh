@@ -80,22 +80,58 @@ check "resting layer: resumed run is byte-identical to the uninterrupted one" cm
 check "rest_speed in a periodic box: non-zero exit, both keys named" \
   bash -c "[ $rc -ne 0 ] && grep -q \"'rest_speed'\" '$tmp/err_rest' && grep -q \"'container'\" '$tmp/err_rest' && [ ! -e '$tmp/bad_rest.h5' ]"
 
-# Neighbour lists (shell): a wet 3D shaker twice identical, and killed after its second
-# checkpoint and resumed, identical too (the lists are rebuilt from the state at each checkpoint).
-lists="$scenes/shake3d_5_2c.ini n=400 lx=12 ly=12 shell=0.3 t_end=6 dt_series=0.5 dt_snapshot=3
-  profile_bins=0 profile_start=0 dt_checkpoint=2"
-listin() { local dir=$1; shift; mkdir -p "$dir" && (cd "$dir" && "$run" $lists -q --no-volatile "$@" -o run.h5 2> err); }
-listin "$tmp/la"
-listin "$tmp/lb"
-check "neighbour lists: two runs byte-identical" cmp -s "$tmp/la/run.h5" "$tmp/lb/run.h5"
-listin "$tmp/lr" --abort-after-checkpoint 2; rc=$?
-check "neighbour lists: aborted after its second checkpoint (exit $rc)" test "$rc" -eq 3
-listin "$tmp/lr"
-check "neighbour lists: resumed run is byte-identical to the uninterrupted one" cmp -s "$tmp/la/run.h5" "$tmp/lr/run.h5"
-check "neighbour lists: ledger closes" bash -c "grep -oE 'ledger_residual=[^ ]+' '$tmp/la/err' | \
-  awk -F= '{ n++; ok = (\$2 < 1e-9) } END { exit !(n == 1 && ok) }'"
-"$run" "$scenes/shear3d.ini" shell=0.3 -o "$tmp/bad_shell.h5" 2> "$tmp/err_shell"; rc=$?
-check "shell with the shear field: non-zero exit, both keys named" \
-  bash -c "[ $rc -ne 0 ] && grep -q \"'shell'\" '$tmp/err_shell' && grep -q \"'shear_force'\" '$tmp/err_shell' && [ ! -e '$tmp/bad_shell.h5' ]"
+# reproducible LABEL DIR ARGS...: the run ARGS twice byte-identical, and killed after its second
+# checkpoint and resumed, identical too; its ledger closes (DIR: a scratch prefix)
+reproducible() {
+  local label=$1 d=$2; shift 2
+  local args=("$@") rc
+  runat() { local dir=$1; shift; mkdir -p "$dir" && (cd "$dir" && "$run" "${args[@]}" -q --no-volatile "$@" -o run.h5 2> err); }
+  runat "$d.a"; runat "$d.b"
+  check "$label: two runs byte-identical" cmp -s "$d.a/run.h5" "$d.b/run.h5"
+  runat "$d.r" --abort-after-checkpoint 2; rc=$?
+  check "$label: aborted after its second checkpoint (exit $rc)" test "$rc" -eq 3
+  runat "$d.r"
+  check "$label: resumed run is byte-identical to the uninterrupted one" cmp -s "$d.a/run.h5" "$d.r/run.h5"
+  check "$label: ledger closes" bash -c "grep -oE 'ledger_residual=[^ ]+' '$d.a/err' | \
+    awk -F= '{ n++; ok = (\$2 < 1e-9) } END { exit !(n == 1 && ok) }'"
+}
+# refused KEY=VALUE OTHER SCENE: the scene with KEY=VALUE exits non-zero naming KEY and OTHER
+refused() {
+  local kv=$1 other=$2 scene=$3 key=${1%%=*} rc
+  "$run" "$scene" "$kv" -o "$tmp/bad_$key.h5" 2> "$tmp/err_$key"; rc=$?
+  check "$key with $other: non-zero exit, both keys named" \
+    bash -c "[ $rc -ne 0 ] && grep -q \"'$key'\" '$tmp/err_$key' && grep -q \"'$other'\" '$tmp/err_$key' && [ ! -e '$tmp/bad_$key.h5' ]"
+}
+
+# Neighbour lists (shell): a wet 3D shaker (the lists are rebuilt from the state at each
+# checkpoint, so the resumed run is identical too).
+reproducible "neighbour lists" "$tmp/l" "$scenes/shake3d_5_2c.ini" n=400 lx=12 ly=12 shell=0.3 \
+  t_end=6 dt_series=0.5 dt_snapshot=3 profile_bins=0 profile_start=0 dt_checkpoint=2
+refused shell=0.3 shear_force "$scenes/shear3d.ini"
+
+# The random force (noise): kicks drawn from a counter-based generator of (seed, kick, grain),
+# so reruns and resumes are byte-identical with nothing of the generator in the checkpoint;
+# the kicks' work closes the ledger; another seed kicks otherwise.
+noisy=("$scenes/noise2d_wet.ini" n=300 t_end=30 dt_series=1 dt_snapshot=10 dt_checkpoint=10)
+reproducible "random force" "$tmp/n" "${noisy[@]}"
+mkdir -p "$tmp/n.s2" && (cd "$tmp/n.s2" && "$run" "${noisy[@]}" seed=2 -q --no-volatile -o run.h5 2> err)
+check "random force: another seed, other bytes" bash -c "! cmp -s '$tmp/n.a/run.h5' '$tmp/n.s2/run.h5'"
+refused noise=0.1 shear_force "$scenes/shear3d.ini"
+
+# A checkpoint written while the configuration listed "shell = 0" (before the key was left out
+# at 0, as the shear field's keys are) still resumes, to the same bytes.
+runin "$tmp/fp0" --no-volatile
+runin "$tmp/fp" --no-volatile --abort-after-checkpoint 1
+/usr/bin/python3 - "$tmp/fp/run.h5.ckpt" <<'PY' 2> "$tmp/err_fp"
+import sys, h5py
+with h5py.File(sys.argv[1], "r+") as f:
+    s = f.attrs["scene"]
+    s = s.decode() if isinstance(s, bytes) else s
+    at = s.index("\nstall_rate") + 1 if "\nstall_rate" in s else s.index("\n") + 1
+    f.attrs["scene"] = s[:at] + "shell = 0\n" + s[at:]
+PY
+check "old checkpoint: 'shell = 0' planted in its configuration" grep -q "shell = 0" <(h5dump -a /scene "$tmp/fp/run.h5.ckpt" 2>/dev/null)
+runin "$tmp/fp" --no-volatile
+check "old checkpoint with 'shell = 0': resumed, byte-identical to the uninterrupted run" cmp -s "$tmp/fp0/run.h5" "$tmp/fp/run.h5"
 
 summary

@@ -283,9 +283,19 @@ static void test_visit_and_help(void)
   int rc = load_variant(&sc, NULL, 0);
 
   rc = rc ? rc : wg_scene_visit(&sc, record, &log);
-  TH_CHECK(rc == WG_OK && log.count == 44 + 3 && strcmp(log.last, "t_driv") == 0,
-           "visit: 44 keys (the event-driven engine's) then 3 derived entries (count %d, last %s)",
-           log.count, log.last);
+  TH_CHECK(rc == WG_OK && log.count == 43 + 3 && strcmp(log.last, "t_driv") == 0,
+           "visit: 43 keys (the event-driven engine's; shell, noise and noise_dt left out while "
+           "off) then 3 derived entries (count %d, last %s)", log.count, log.last);
+  {
+    wg_scene on = sc;
+    visit_log lo = {0};
+    int r1 = wg_scene_set_override(&on, "shell=0.3");
+    r1 = r1 ? r1 : wg_scene_set_override(&on, "noise=0.1");
+    r1 = r1 ? r1 : wg_scene_finish(&on);
+    r1 = r1 ? r1 : wg_scene_visit(&on, record, &lo);
+    TH_CHECK(r1 == WG_OK && lo.count == 46 + 3, "visit with shell and noise on: 46 keys then 3 derived "
+             "entries (count %d)", lo.count);
+  }
   {
     /* the time-driven engine: its 15 keys instead of the 6 event-driven ones, and dt;
        with contact = hertz also Hertz's K */
@@ -296,7 +306,7 @@ static void test_visit_and_help(void)
     r2 = r2 ? r2 : wg_scene_set_override(&td, "grazing_angle=");
     r2 = r2 ? r2 : wg_scene_finish(&td);
     r2 = r2 ? r2 : wg_scene_visit(&td, record, &lt);
-    TH_CHECK(r2 == WG_OK && lt.count == 44 - 6 + 15 + 3 + 1 && strcmp(lt.last, "dt") == 0,
+    TH_CHECK(r2 == WG_OK && lt.count == 43 - 5 + 15 + 3 + 1 && strcmp(lt.last, "dt") == 0,
              "visit, engine = td: 53 keys then 4 derived entries (count %d, last %s)", lt.count, lt.last);
     TH_CLOSE("engine = td: dt = t_contact / steps_per_contact", td.dt, 0.005 / 50, 1e-12, 0);
   }

@@ -64,7 +64,7 @@ typedef struct {
 
 enum {
   K_ENGINE, K_DIM, K_N, K_LX, K_LY, K_HEIGHT, K_PHI, K_CONTAINER, K_GRAVITY, K_SIGMA_P,
-  K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_REST_SPEED, K_SHELL, K_GAMMA, K_ESTAR,
+  K_MASS, K_S_CRIT, K_E_CB, K_E_CB_MGS, K_F_B, K_EPS, K_EPS_WALL, K_TC, K_GRAZING, K_REST_SPEED, K_SHELL, K_NOISE, K_NOISE_DT, K_GAMMA, K_ESTAR,
   K_ESTAR_D, K_TG_INIT, K_TG_INIT_ABS, K_INIT, K_INIT_FROM, K_INIT_JITTER, K_SEED, K_T_END, K_DT_SERIES, K_DT_SNAPSHOT,
   K_PROFILE_BINS, K_PROFILE_START, K_DT_PROFILE, K_MAP_BINS, K_MAP_BINS_Y, K_MAP_START,
   K_DT_MAP, K_MAP_SAMPLES, K_HEIGHT_BINS, K_HEIGHT_START, K_DT_HEIGHT, K_HEIGHT_SAMPLES,
@@ -154,6 +154,15 @@ static const key_desc keys[NKEYS] = {
                "shell of it and is listed anew when it has moved shell/2 (docs/engines.md, "
                "\"Neighbour lists\"); 0 = the cells' stencils and cell crossings", NULL, 0, 0,
                ONLY_ED},
+  [K_NOISE] = {"noise", T_DOUBLE, OFF(noise), 0, INF, MAX_EXCL, DEF_VALUE, 0, NULL,
+               "d2 tau-3", "strength gamma_s of the random force (Eq. 2.12): every noise_dt each "
+               "particle's velocity is kicked by a Gaussian of variance 2 noise noise_dt per axis, "
+               "less the mean kick (docs/engines.md, \"Random force\"); 0 = none", NULL, 0, 0,
+               ONLY_ED},
+  [K_NOISE_DT] = {"noise_dt", T_DOUBLE, OFF(noise_dt), 0, INF, MIN_EXCL | MAX_EXCL, DEF_VALUE,
+                  0.01, NULL, "sqrt(d/g)", "interval between the random force's kicks; keep it "
+                  "well below the mean free time (white noise is its limit)", NULL, 0, 0,
+                  ONLY_ED},
   [K_GAMMA] = {"gamma", T_DOUBLE, OFF(gamma), 0, INF, MIN_EXCL | MAX_EXCL, DEF_COND, 0,
                "required (shaker)", "1", "reduced acceleration Gamma = A w^2 / g (Eq. 2.19)",
                NULL, 0, 0},
@@ -860,6 +869,17 @@ static int check_shell(const wg_scene *sc)
   return WG_OK;
 }
 
+/* The random force kicks free particles: not the shear field's or the floor's riders. */
+static int check_noise(const wg_scene *sc)
+{
+  if (sc->noise == 0) return WG_OK;
+  if (sc->shear_force != 0)
+    return pair_error(sc, K_NOISE, K_SHEAR_FORCE, "the random force is not combined with the shear field");
+  if (sc->rest_speed != 0)
+    return pair_error(sc, K_NOISE, K_REST_SPEED, "the random force is not combined with resting on the floor");
+  return WG_OK;
+}
+
 /* The shear field: its bins (default one per diameter) and its times; in 2D it acts along
    the second axis, which must then be periodic (no walls to meet a force along them). */
 static int resolve_shear(wg_scene *sc)
@@ -1109,7 +1129,7 @@ int wg_scene_finish(wg_scene *sc)
   if ((rc = check_required(sc)) || (rc = resolve_box(sc)) || (rc = resolve_gravity(sc)) ||
       (rc = resolve_engine(sc)) || (rc = resolve_bridge(sc)) || (rc = resolve_driving(sc)) ||
       (rc = resolve_temperature(sc)) || (rc = check_fill(sc)) || (rc = resolve_output_times(sc)) ||
-      (rc = check_packing(sc)) || (rc = resolve_shear(sc)) || (rc = check_rest(sc)) || (rc = check_shell(sc)) ||
+      (rc = check_packing(sc)) || (rc = resolve_shear(sc)) || (rc = check_rest(sc)) || (rc = check_shell(sc)) || (rc = check_noise(sc)) ||
       (rc = check_box(sc)))
     return rc;
   return WG_OK;
@@ -1203,6 +1223,9 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user)
     /* the shear field's keys only with a field: a scene without one gives the parameters
        (and checkpoint fingerprint) it gave before the field existed */
     if (k >= K_SHEAR_FORCE && k <= K_SHEAR_OFF && sc->shear_force == 0) continue;
+    /* and for the neighbour lists and the random force */
+    if (k == K_SHELL && sc->shell == 0) continue;
+    if ((k == K_NOISE || k == K_NOISE_DT) && sc->noise == 0) continue;
     /* the same for the height maps */
     if (k >= K_HEIGHT_BINS && k <= K_HEIGHT_SAMPLES && sc->height_bins == 0) continue;
     format_value(sc, k, buf, sizeof buf);

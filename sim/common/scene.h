@@ -36,6 +36,8 @@ typedef struct wg_scene {
   double grazing_angle; /* grazing_angle: least angle of a bridge reflection [rad] (0.05) */
   double rest_speed;   /* rest_speed: floor contacts slower than this come to rest [sqrt(g d)]; 0 = off */
   double shell;        /* shell: neighbour-list shell [d]; 0 = cells only */
+  double noise;        /* noise: random-force strength gamma_s, Eq. 2.12 [d^2 tau^-3]; 0 = none */
+  double noise_dt;     /* noise_dt: interval between its kicks [sqrt(d/g)] (0.01) */
   double gamma;        /* gamma: Gamma = A w^2 / g, Eq. 2.19 (shaker only) */
   double estar;        /* estar: E* = m (A w)^2 / (2 E_cb), Eq. 2.18 (wet shaker) */
   double estar_d;      /* estar_d: E*_d = (A w)^2 / (2 g d) (dry shaker) */

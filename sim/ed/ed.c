@@ -6,6 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <gsl/gsl_cdf.h>
+
+#include "counter_rng.h"
 #include "init.h"
 
 /* Bonds a particle can hold: a disk touches at most 6 equal neighbours, a sphere 12; the
@@ -1376,15 +1379,71 @@ static int switch_field(wg_ed *s, int on)
   return wg_ed_synchronize(s);
 }
 
+/* ---------- the random force (thesis Sec. 2.4.2) ---------- */
+
+/* Kicks made by time t: the k >= 1 with k noise_dt <= t, compared as the event loop does. */
+static unsigned long long kicks_by(const wg_ed *s, double t)
+{
+  double k = t > 0 ? floor(t / s->noise_dt) : 0;
+  while ((k + 1) * s->noise_dt <= t) k++;
+  while (k > 0 && k * s->noise_dt > t) k--;
+  return (unsigned long long)k;
+}
+
+static double next_kick_time(const wg_ed *s)
+{
+  return (double)(s->counts.kicks + 1) * s->noise_dt;
+}
+
+/* Standard Gaussian number of kick k, particle identity id, axis a. */
+static double kick_gauss(const wg_ed *s, unsigned long long k, long id, int a)
+{
+  return gsl_cdf_ugaussian_Pinv(wg_counter_uniform(s->sc->seed, k, (uint64_t)id, (uint64_t)a));
+}
+
+/* Eq. 2.12 over one interval: dv = sqrt(2 noise noise_dt) xi per axis, less the mass-weighted
+   mean kick so that the total momentum stays as it is (the kicks' correlations change by
+   -1/N).  Sums run in identity order, so the result does not depend on the slots.  Every
+   trajectory changes: all events are predicted afresh. */
+static int noise_kick(wg_ed *s)
+{
+  unsigned long long k = ++s->counts.kicks;
+  double amp = sqrt(2 * s->noise * s->noise_dt), mean[3] = {0, 0, 0}, mtot = 0;
+  for (long id = 0; id < s->n; id++) {
+    double m = wg_ed_mass(s, s->slot[id]);
+    mtot += m;
+    for (int a = 0; a < s->dim; a++) mean[a] += m * kick_gauss(s, k, id, a);
+  }
+  for (int a = 0; a < s->dim; a++) mean[a] /= mtot;
+  for (long id = 0; id < s->n; id++) {
+    long i = s->slot[id];
+    double m = wg_ed_mass(s, i), work = 0;
+    advance(s, i, s->now);
+    for (int a = 0; a < s->dim; a++) {
+      double dv = amp * (kick_gauss(s, k, id, a) - mean[a]);
+      work += m * dv * (s->p[i].v[a] + 0.5 * dv);
+      s->p[i].v[a] += dv;
+    }
+    wg_ksum_add(&s->ledger.injected_noise, work);
+  }
+  for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
+  for (long i = 0; i < s->n; i++) s->key[i] = next_event_time(&s->ev[i]);
+  wg_evqueue_build(&s->queue);
+  return WG_OK;
+}
+
 int wg_ed_advance(wg_ed *s, double t_stop)
 {
-  if (!s->shear) return advance_events(s, t_stop);
-  for (;;) { /* up to each time the field switches, then on */
-    double t_switch = s->sheared ? s->shear->t_off : s->now < s->shear->t_on ? s->shear->t_on
-                                                                           : INFINITY;
-    if (!(t_switch <= t_stop)) return advance_events(s, t_stop);
-    int st = advance_events(s, t_switch);
-    if (st == WG_OK) st = switch_field(s, !s->sheared);
+  if (!s->shear && !s->noise) return advance_events(s, t_stop);
+  for (;;) { /* up to each time the field switches or the particles are kicked, then on */
+    double t_switch = !s->shear ? INFINITY
+                      : s->sheared ? s->shear->t_off
+                      : s->now < s->shear->t_on ? s->shear->t_on : INFINITY;
+    double t_kick = s->noise ? next_kick_time(s) : INFINITY;
+    double t_next = t_kick < t_switch ? t_kick : t_switch;
+    if (!(t_next <= t_stop)) return advance_events(s, t_stop);
+    int st = advance_events(s, t_next);
+    if (st == WG_OK) st = t_kick < t_switch ? noise_kick(s) : switch_field(s, !s->sheared);
     if (st != WG_OK) return st;
   }
 }
@@ -1509,7 +1568,7 @@ double wg_ed_ledger_residual(wg_ed *s)
   double ek, ep;
   wg_ed_energy(s, &ek, &ep);
   const wg_ledger *l = &s->ledger;
-  double in = wg_ed_wall_work(s) + wg_ed_field_work(s);
+  double in = wg_ed_wall_work(s) + wg_ed_field_work(s) + wg_ksum_value(&l->injected_noise);
   double out = wg_ksum_value(&l->dissipated_coll) + wg_ksum_value(&l->dissipated_wall) +
                wg_ksum_value(&l->dissipated_rupt);
   double level = ek + fabs(ep);
@@ -1533,6 +1592,8 @@ static int setup_common(wg_ed *s, const wg_scene *sc, long n)
   s->eps_wall = sc->eps_wall;
   s->tc = sc->tc;
   s->grazing_angle = sc->grazing_angle;
+  s->noise = sc->noise;
+  s->noise_dt = sc->noise_dt;
   s->wet = sc->s_crit > 0 && sc->e_cb > 0;
   s->s_crit = s->wet ? sc->s_crit : 0;
   s->e_cb = s->wet ? sc->e_cb : 0;
@@ -1641,6 +1702,7 @@ int wg_ed_start(wg_ed *s, double t0)
   if (st != WG_OK) return st;
   s->now = t0;
   s->sheared = wg_shear_active(s->shear, t0);
+  if (s->noise) s->counts.kicks = kicks_by(s, t0);
   st = wg_ed_synchronize(s);
   if (st != WG_OK) return st;
   double ek, ep;

@@ -50,7 +50,8 @@ typedef struct wg_counts {
       grazing,                /* bridge reflections raised to GRAZING_ANGLE */
       bin_crossings,          /* crossings between the shear field's bins */
       rests,                  /* floor contacts that came to rest (rest_speed) */
-      lift_offs;              /* resting particles that left the floor */
+      lift_offs,              /* resting particles that left the floor */
+      kicks;                  /* instants at which the random force kicked every particle */
 } wg_counts;
 
 /* Energy ledger [m g d], compensated sums. */
@@ -60,6 +61,7 @@ typedef struct wg_ledger {
   wg_ksum dissipated_wall;   /* lost in inelastic wall collisions */
   wg_ksum dissipated_rupt;   /* taken by bridge ruptures, E_cb each */
   wg_ksum injected_field;    /* work of the shear field, booked when a particle moves */
+  wg_ksum injected_noise;    /* work of the random kicks (noise > 0) */
   double e0;                 /* kinetic + potential energy at t = 0 */
   double scale;              /* largest kinetic + |potential| energy seen; for the residual */
 } wg_ledger;
@@ -91,6 +93,10 @@ typedef struct wg_ed {
   wg_shear *shear;
   int sheared;
   int32_t *bin;                /* bin of each particle (with a field) */
+  /* The random force (scene key noise > 0; thesis Sec. 2.4.2, Eq. 2.12): every noise_dt each
+     particle's velocity takes a Gaussian kick of variance 2 noise noise_dt per axis, less the
+     mass-weighted mean kick (docs/engines.md, "Random force").  Kick k falls at k noise_dt. */
+  double noise, noise_dt;
 
   /* Particles are stored in slots, renumbered in cell order at every synchronisation so that
      neighbours sit close in memory; id[slot] is the particle's fixed identity (input order,
