@@ -40,7 +40,7 @@ LIB_OBJ := $(patsubst sim/%.c,$(BUILD)/sim/%.o,$(LIB_SRC))
 SIM_HDR := $(wildcard $(patsubst %,sim/%/*.h,$(SIM_DIRS)))
 LIB := $(BUILD)/libwetgran.a
 ANALYSIS_SRC := $(wildcard analysis/*.c)
-TOOLS := $(BIN)/wetgran-run $(patsubst analysis/%.c,$(BIN)/wetgran-%,$(ANALYSIS_SRC))
+TOOLS := $(BIN)/wetgran-run $(patsubst analysis/%.c,$(BIN)/wetgran-%,$(ANALYSIS_SRC)) $(BIN)/wetgran-cahn-hilliard
 TEST_SRC := $(wildcard tests/test_*.c)
 TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 BENCH_SRC := $(wildcard tests/bench/bench_*.c)
@@ -98,6 +98,12 @@ $(BIN)/wetgran-run: $(BUILD)/sim/run/run_main.o $(LIB) | $(BIN)
 
 $(BIN)/wetgran-%: analysis/%.c $(LIB) | $(BIN)
 	$(CC) $(ALL_CFLAGS) $< $(LIB) $(LIBS) -o $@
+
+# sim/continuum/: the advective Cahn-Hilliard solver of the layering paper, a tool of its own
+# (FFTW; kept out of libwetgran.a, which needs no FFTW)
+$(BUILD)/sim/continuum/ch.o $(BUILD)/sim/continuum/ch_main.o: sim/continuum/ch.h
+$(BIN)/wetgran-cahn-hilliard: $(BUILD)/sim/continuum/ch_main.o $(BUILD)/sim/continuum/ch.o $(LIB) | $(BIN)
+	$(CC) $(ALL_CFLAGS) $^ $(LIBS) -lfftw3 -o $@
 
 # wetgran-boundary triangulates with qhull (reentrant library)
 $(BIN)/wetgran-boundary: LIBS += -lqhull_r
