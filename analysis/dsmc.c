@@ -14,27 +14,20 @@
 
 #include "wg_args.h"
 
-typedef struct {
-  const char *name;
-  double value;
-  double min, max;
-  const char *help;
-} key;
-
 enum { K_DIM, K_N, K_EPS, K_EPS_CB, K_GAMMA, K_DT, K_T_END, K_BURN, K_BATCHES, K_SEED, NK };
-static key keys[NK] = {
-    [K_DIM] = {"dim", 2, 2, 3, "dimension D (2 or 3)"},
-    [K_N] = {"n", 20000, 2, 1e8, "particles"},
-    [K_EPS] = {"eps", 1, 0, 1, "coefficient of normal restitution"},
-    [K_EPS_CB] = {"eps_cb", 0, 0, 20,
+static wg_num_key keys[NK] = {
+    [K_DIM] = {"dim", 2, 2, 3, 1, "dimension D (2 or 3)"},
+    [K_N] = {"n", 20000, 2, 1e8, 1, "particles"},
+    [K_EPS] = {"eps", 1, 0, 1, 0, "coefficient of normal restitution"},
+    [K_EPS_CB] = {"eps_cb", 0, 0, 20, 0,
                   "bridge energy as eps_cb = 2 E_cb / T at T = 1 (E_cb = eps_cb / 2); 0 = dry"},
-    [K_GAMMA] = {"gamma", NAN, 0, 1e6,
+    [K_GAMMA] = {"gamma", NAN, 0, 1e6, 0,
                  "noise strength (Eq. A.33); default: the value that holds T near 1"},
-    [K_DT] = {"dt", 0.02, 1e-6, 1, "time step (kicks once per step)"},
-    [K_T_END] = {"t_end", 3000, 1, 1e9, "simulated time"},
-    [K_BURN] = {"burn", 200, 0, 1e9, "time before sampling starts"},
-    [K_BATCHES] = {"batches", 20, 2, 1000, "batches of the samples for the error bars"},
-    [K_SEED] = {"seed", 1, 0, 4294967295.0, "seed of GSL's mt19937"},
+    [K_DT] = {"dt", 0.02, 1e-6, 1, 0, "time step (kicks once per step)"},
+    [K_T_END] = {"t_end", 3000, 1, 1e9, 0, "simulated time"},
+    [K_BURN] = {"burn", 200, 0, 1e9, 0, "time before sampling starts"},
+    [K_BATCHES] = {"batches", 20, 2, 1000, 1, "batches of the samples for the error bars"},
+    [K_SEED] = {"seed", 1, 0, 4294967295.0, 1, "seed of GSL's mt19937"},
 };
 
 static void usage(FILE *out)
@@ -51,40 +44,14 @@ static void usage(FILE *out)
           "masses) and unchanged otherwise (slower pairs lie outside the integrals of\n"
           "Eq. A.54, as in the thesis).  Every dt each velocity takes a Gaussian kick of\n"
           "variance 2 gamma dt per axis, less the mean kick.  Keys (default):\n");
-  for (int k = 0; k < NK; k++) {
-    if (isnan(keys[k].value)) fprintf(out, "  %-8s %-8s %s\n", keys[k].name, "auto", keys[k].help);
-    else fprintf(out, "  %-8s %-8g %s\n", keys[k].name, keys[k].value, keys[k].help);
-  }
+  wg_num_key_help(out, keys, NK);
   fprintf(out, "Example: wetgran-dsmc dim=2 eps_cb=0.2 | awk '$1 == \"a2\"'\n");
 }
 
 static int parse(int argc, char **argv)
 {
-  for (int a = 1; a < argc; a++) {
-    const char *eq = strchr(argv[a], '=');
-    int k = 0;
-    if (eq)
-      for (; k < NK; k++)
-        if (strlen(keys[k].name) == (size_t)(eq - argv[a]) && !strncmp(argv[a], keys[k].name, (size_t)(eq - argv[a])))
-          break;
-    if (!eq || k == NK) {
-      fprintf(stderr, "wetgran-dsmc: argument '%s': not key=value with a known key (--help)\n", argv[a]);
-      return 2;
-    }
-    double v;
-    if (wg_arg_double(keys[k].name, eq + 1, &v) != WG_OK) return 2;
-    if (!(v >= keys[k].min && v <= keys[k].max)) {
-      fprintf(stderr, "wetgran-dsmc: argument '%s': %s must lie in [%g, %g]\n", argv[a],
-              keys[k].name, keys[k].min, keys[k].max);
-      return 2;
-    }
-    keys[k].value = v;
-  }
-  double d = keys[K_DIM].value;
-  if (d != 2 && d != 3) {
-    fprintf(stderr, "wetgran-dsmc: dim must be 2 or 3\n");
-    return 2;
-  }
+  for (int a = 1; a < argc; a++)
+    if (wg_num_key_set("wetgran-dsmc", keys, NK, argv[a])) return 2;
   if (keys[K_BURN].value >= keys[K_T_END].value) {
     fprintf(stderr, "wetgran-dsmc: burn (%g) must be shorter than t_end (%g)\n",
             keys[K_BURN].value, keys[K_T_END].value);

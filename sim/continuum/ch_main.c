@@ -15,35 +15,29 @@
 
 #define PROG "wetgran-cahn-hilliard"
 
-typedef struct {
-  const char *name;
-  double value, min, max;
-  const char *help;
-} key;
-
 enum { K_NX, K_NZ, K_LX, K_LZ, K_K, K_KAPPA, K_CO, K_CMEAN, K_MOB, K_SHEAR, K_S, K_DT, K_TEND,
        K_DTSER, K_DTSNAP, K_INIT, K_AMP, K_MX, K_MZ, K_SEED, NK };
-static key keys[NK] = {
-    [K_NX] = {"nx", 1, 1, 8192, "grid points along x, the flow (1: the 1D problem along z)"},
-    [K_NZ] = {"nz", 128, 4, 8192, "grid points along z, across the flow"},
-    [K_LX] = {"lx", 6.283185307179586, 1e-3, 1e6, "box length along x (periodic)"},
-    [K_LZ] = {"lz", 6.283185307179586, 1e-3, 1e6, "box length along z (walls; 2 pi: the paper's implied size)"},
-    [K_K] = {"K", 25, -1e6, 1e6, "bulk energy scale K of Eq. 3 (K < 0: a single well, no segregation)"},
-    [K_KAPPA] = {"kappa", 0.7, 1e-9, 1e6, "gradient energy kappa of Eq. 3"},
-    [K_CO] = {"c_o", 0.5, 0, 1, "unstable point c_o of the double well (Eq. 3)"},
-    [K_CMEAN] = {"c_mean", NAN, -10, 10, "mean concentration (default c_o)"},
-    [K_MOB] = {"mobility", 0.1, 1e-9, 1e6, "mobility M = M_o gamma_dot, in strain units M_o (Eq. 2; not given by the paper: at 0.1 the shear holds ~k_c layers, at 1 they coarsen to one; docs/layering.md)"},
-    [K_SHEAR] = {"shear", 1, -1e3, 1e3, "velocity gradient du_x/dz in strain units: 1 = the paper's shear, 0 = none"},
-    [K_S] = {"S", NAN, 0, 1e9, "stabiliser of the semi-implicit step (default 2 |K|: energy-stable for |c - 1/2| < 1)"},
-    [K_DT] = {"dt", 1e-3, 1e-9, 10, "time step, in strain units"},
-    [K_TEND] = {"t_end", 50, 0, 1e9, "strain at the end"},
-    [K_DTSER] = {"dt_series", NAN, 0, 1e9, "interval of the series (default t_end/500)"},
-    [K_DTSNAP] = {"dt_snapshot", NAN, 0, 1e9, "interval of the field snapshots (default t_end/10)"},
-    [K_INIT] = {"init", 0, 0, 1, "initial state: 0 = c_mean plus uniform noise of amplitude amp, 1 = c_mean + amp cos(2 pi mode_x x/lx) cos(pi mode_z z/lz)"},
-    [K_AMP] = {"amp", 0.01, 0, 10, "amplitude of the initial noise or mode"},
-    [K_MX] = {"mode_x", 0, 0, 4096, "x index of the initial mode, and of the series' amplitude"},
-    [K_MZ] = {"mode_z", 3, 0, 8192, "z index of the initial mode, and of the series' amplitude"},
-    [K_SEED] = {"seed", 1, 0, 4294967295.0, "seed of the initial noise (GSL mt19937)"},
+static wg_num_key keys[NK] = {
+    [K_NX] = {"nx", 1, 1, 8192, 1, "grid points along x, the flow (1: the 1D problem along z)"},
+    [K_NZ] = {"nz", 128, 4, 8192, 1, "grid points along z, across the flow"},
+    [K_LX] = {"lx", 6.283185307179586, 1e-3, 1e6, 0, "box length along x (periodic)"},
+    [K_LZ] = {"lz", 6.283185307179586, 1e-3, 1e6, 0, "box length along z (walls; 2 pi: the paper's implied size)"},
+    [K_K] = {"K", 25, -1e6, 1e6, 0, "bulk energy scale K of Eq. 3 (K < 0: a single well, no segregation)"},
+    [K_KAPPA] = {"kappa", 0.7, 1e-9, 1e6, 0, "gradient energy kappa of Eq. 3"},
+    [K_CO] = {"c_o", 0.5, 0, 1, 0, "unstable point c_o of the double well (Eq. 3)"},
+    [K_CMEAN] = {"c_mean", NAN, -10, 10, 0, "mean concentration (default c_o)"},
+    [K_MOB] = {"mobility", 0.1, 1e-9, 1e6, 0, "mobility M = M_o gamma_dot, in strain units M_o (Eq. 2; not given by the paper: at 0.1 the shear holds ~k_c layers, at 1 they coarsen to one; docs/layering.md)"},
+    [K_SHEAR] = {"shear", 1, -1e3, 1e3, 0, "velocity gradient du_x/dz in strain units: 1 = the paper's shear, 0 = none"},
+    [K_S] = {"S", NAN, 0, 1e9, 0, "stabiliser of the semi-implicit step (default 2 |K|: energy-stable for |c - 1/2| < 1)"},
+    [K_DT] = {"dt", 1e-3, 1e-9, 10, 0, "time step, in strain units"},
+    [K_TEND] = {"t_end", 50, 0, 1e9, 0, "strain at the end"},
+    [K_DTSER] = {"dt_series", NAN, 0, 1e9, 0, "interval of the series (default t_end/500)"},
+    [K_DTSNAP] = {"dt_snapshot", NAN, 0, 1e9, 0, "interval of the field snapshots (default t_end/10)"},
+    [K_INIT] = {"init", 0, 0, 1, 1, "initial state: 0 = c_mean plus uniform noise of amplitude amp, 1 = c_mean + amp cos(2 pi mode_x x/lx) cos(pi mode_z z/lz)"},
+    [K_AMP] = {"amp", 0.01, 0, 10, 0, "amplitude of the initial noise or mode"},
+    [K_MX] = {"mode_x", 0, 0, 4096, 1, "x index of the initial mode, and of the series' amplitude"},
+    [K_MZ] = {"mode_z", 3, 0, 8192, 1, "z index of the initial mode, and of the series' amplitude"},
+    [K_SEED] = {"seed", 1, 0, 4294967295.0, 1, "seed of the initial noise (GSL mt19937)"},
 };
 #define V(k) keys[k].value
 
@@ -65,36 +59,8 @@ static void usage(FILE *out)
           "A mode k of small amplitude grows at M k^2 (K c_o (1 - c_o) - kappa k^2); k_c =\n"
           "sqrt(K c_o (1 - c_o) / kappa) (sqrt(K / (4 kappa)) at c_o = 1/2).\n"
           "Keys (default):\n");
-  for (int k = 0; k < NK; k++) {
-    if (isnan(keys[k].value)) fprintf(out, "  %-12s %-8s %s\n", keys[k].name, "auto", keys[k].help);
-    else fprintf(out, "  %-12s %-8g %s\n", keys[k].name, keys[k].value, keys[k].help);
-  }
+  wg_num_key_help(out, keys, NK);
   fprintf(out, "Example: " PROG " run K=25 kappa=0.7 t_end=200 -o layers.h5 && " PROG " profile layers.h5\n");
-}
-
-static int parse_key(const char *arg)
-{
-  const char *eq = strchr(arg, '=');
-  int k = 0;
-  if (eq)
-    for (; k < NK; k++)
-      if (strlen(keys[k].name) == (size_t)(eq - arg) && !strncmp(arg, keys[k].name, (size_t)(eq - arg))) break;
-  if (!eq || k == NK) {
-    fprintf(stderr, PROG ": argument '%s': not key=value with a known key (--help)\n", arg);
-    return 2;
-  }
-  double v;
-  if (wg_arg_double(keys[k].name, eq + 1, &v) != WG_OK) return 2;
-  if (!(v >= keys[k].min && v <= keys[k].max)) {
-    fprintf(stderr, PROG ": argument '%s': %s must lie in [%g, %g]\n", arg, keys[k].name, keys[k].min, keys[k].max);
-    return 2;
-  }
-  if ((k == K_NX || k == K_NZ || k == K_INIT || k == K_MX || k == K_MZ) && v != floor(v)) {
-    fprintf(stderr, PROG ": argument '%s': %s must be a whole number\n", arg, keys[k].name);
-    return 2;
-  }
-  keys[k].value = v;
-  return 0;
 }
 
 enum { NSER = 6 };
@@ -107,7 +73,7 @@ static int run(int argc, char **argv)
   for (int a = 0; a < argc; a++) {
     if (!strcmp(argv[a], "-o") && a + 1 < argc) out = argv[++a];
     else if (!strcmp(argv[a], "-q")) quiet = 1;
-    else if (parse_key(argv[a])) return 2;
+    else if (wg_num_key_set(PROG " run", keys, NK, argv[a])) return 2;
   }
   if (!out) {
     fprintf(stderr, PROG " run: no output file (-o OUT.h5)\n");
