@@ -1,19 +1,11 @@
-# Fig. 7.5c look: F_scrit L_x / d against F_B (points with the sweep's bracket), the fitted
-# line, and the thesis's fit 3.7 mg + 1.4 F_B; the sweep's runs behind (solid filled,
-# fluidized open).
+# Fig. 7.5c look (../shear_sweep.gp): F_scrit L_x / d against F_B, the fitted line, and the
+# thesis's fit 3.7 mg + 1.4 F_B.
 val(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $2 }' %s", k, res)))
 err(k) = real(system(sprintf("awk -F'\t' '$1 == \"%s\" { print $3 }' %s", k, res)))
 a = val("line_a"); ae = err("line_a"); b = val("line_b"); be = err("line_b")
-do for [k = 1:2] {
-  reset
-  if (k == 1) { set terminal pngcairo size 1000,650 font ",11"; set output png } \
-  else { set terminal pdfcairo size 10in,6.5in font ",11"; set output pdf }
-  set title sprintf("fluidization boundary against F_B: L_x = %g d (%s profile): F_{scrit} L_x / d = (%.1f {/Symbol \261} %.1f) mg + (%.2f {/Symbol \261} %.2f) F_B", lx, profile, a, ae, b, be)
-  set xlabel "F_B / mg"; set ylabel "F_{smax} L_x / (mg d)"
-  set key top left box opaque; set xrange [0:*]; set yrange [0:*]
-  plot sweep every ::1 using 1:(strcol(5) eq "solid" ? $2 * lx : NaN) with points pt 7 ps 1 lc rgb "gray50" title "solid run", \
-       sweep every ::1 using 1:(strcol(5) eq "fluidized" ? $2 * lx : NaN) with points pt 6 ps 1 lc rgb "gray50" title "fluidized run", \
-       bnd every ::1 using 1:4:5 with yerrorbars pt 7 ps 1.5 lc rgb "red" title "F_{scrit} (midpoint)", \
-       (a == a ? a + b * x : NaN) with lines lw 2 lc rgb "red" title "line fit", \
-       3.7 + 1.4 * x with lines dt 2 lw 2 lc rgb "blue" title "thesis: 3.7 mg + 1.4 F_B"
-}
+ttl = sprintf("fluidization boundary against F_B: L_x = %g d (%s profile): F_{scrit} L_x / d = (%.1f {/Symbol \261} %.1f) mg + (%.2f {/Symbol \261} %.2f) F_B", lx, profile, a, ae, b, be)
+xl = "F_B / mg"; yl = "F_{smax} L_x / (mg d)"; keypos = "top left"
+xrun(v) = v; yrun(v, f) = f * lx; xcol = 1
+ref1(x) = 3.7 + 1.4 * x; ref1_t = "thesis: 3.7 mg + 1.4 F_B"
+ref2(x) = NaN; ref2_t = ""
+load "../shear_sweep.gp"
