@@ -21,6 +21,7 @@
 
 #include "extrema.h"
 #include "io_h5.h"
+#include "plug.h"
 #include "run_open.h"
 #include "wg_args.h"
 
@@ -298,7 +299,7 @@ static int mode_oscillation(const options *o, int nfile, char **files)
        kappa = (D + 2) / D (5/3 in 3D) */
     double kappa = (h.dim + 2.0) / h.dim;
     double vex = 4 * ngas * h.v_bead;
-    double om_th = sqrt(kappa * h.g / h0 * (1 + vex / (h.area * h0)));
+    double om_th = sqrt(wg_plug_omega2(kappa, h.g, h0, vex, h.area));
     double om = 2 * M_PI / tp, om_err = 2 * M_PI * tp_err / (tp * tp);
     /* its error from h0's: omega_th ~ h0^(-1/2) at least (more with the excluded volume) */
     double rel_th = isfinite(h0_err) ? 0.5 * h0_err / h0 : NAN;

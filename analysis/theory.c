@@ -31,6 +31,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "plug.h"
+
 #define MAX_OUT 48          /* outputs of one model */
 #define MAX_POINTS 1000000  /* points of one curve */
 #define ROOT_TOL 1e-13      /* relative tolerance of root finding and minimisation */
@@ -564,7 +566,7 @@ static int plug_eval(const void *params, wg_theory_result *r)
   if (!(v_ex < vol))
     return domain_error(r, "n", p->n, "excluded volume %g fills the cushion's volume %g", v_ex, vol);
   double wad2 = p->kappa / p->h0;
-  double wp2 = wad2 * (1 + v_ex / vol); /* Eq. 6.5 */
+  double wp2 = wg_plug_omega2(p->kappa, 1, p->h0, v_ex, p->area);
   put(r, "v_ex", v_ex);
   put(r, "omega_p", sqrt(wp2));
   put(r, "omega_p_iso", sqrt(1 / p->h0));
