@@ -3,7 +3,9 @@
 # sum(t^2 / s^2) with error 1 / sqrt(sum(t^2 / s^2)), scaled by sqrt(chi^2/dof) when that
 # exceeds 1.  Prints KEY c error.
 BEGIN { FS = "\t" }
-NR > 1 && $t > 0.005 && (xmax == "" || $x <= xmax + 0) && $ye > 0 {
+/^#/ { next }
+!header++ { next }
+$t > 0.005 && (xmax == "" || $x <= xmax + 0) && $ye > 0 {
   w = 1 / ($ye * $ye); sy += $y * $t * w; st += $t * $t * w; n++; Y[n] = $y; T[n] = $t; W[n] = w
 }
 END {
