@@ -943,6 +943,74 @@ static int a2_eval(const void *params, wg_theory_result *r)
 }
 
 /* ------------------------------------------------------------------------------------------
+   si: the streams paper's table (Waitukaitis et al. 2011, Table I and Sec. II) in SI units,
+   converted to the scene keys of wetgran's units (d, m, g; time sqrt(d/g)).  The linear
+   spring-dashpot of stiffness k_n with restitution e between two grains (m_eff = m/2) lasts
+   t_c = sqrt(pi^2 + ln^2 e) / omega0, omega0 = sqrt(k_n / m_eff) (damped; the paper's gamma_n
+   = 2 omega0 L / sqrt(pi^2 + L^2), L = -ln e), and the time-driven engine's linear law is set by
+   that contact time of two unit masses (scene key t_contact), so t_contact = t_c / sqrt(d/g).
+   The cohesion F_coh out to a gap l_c is the constant bridge law: f_b = F_coh / (m g),
+   s_crit = l_c / d, W_coh = F_coh l_c. */
+typedef struct si_params {
+  double d, rho, g, k_n, e, f_coh, l_c;
+} si_params;
+
+static const wg_theory_key si_keys[] = {
+    KEY(si_params, d, 200e-6, "grain diameter [m] (the paper: 100 and 200 um)"),
+    KEY(si_params, rho, 2500, "density [kg/m^3] (glass; the paper prints 2.5 kg/m^3)"),
+    KEY(si_params, g, 9.81, "gravity [m/s^2]"),
+    KEY(si_params, k_n, 500, "normal (and tangential) stiffness [N/m]"),
+    KEY(si_params, e, 0.9, "coefficient of restitution (0 < e <= 1)"),
+    KEY(si_params, f_coh, 100e-9, "cohesive force F_coh [N] (the paper: 0 to 2000 nN)"),
+    KEY(si_params, l_c, 100e-9, "range of the cohesion, a surface gap [m] (100 nm)"),
+};
+
+static const wg_theory_field si_outputs[] = {
+    {"mass", "grain mass m [kg]"},
+    {"weight", "m g [N]: the unit of force"},
+    {"time_unit", "sqrt(d/g) [s]: the unit of time"},
+    {"speed_unit", "sqrt(g d) [m/s]: the unit of speed"},
+    {"t_c_undamped", "pi / omega0 [s], omega0 = sqrt(k_n / (m/2))"},
+    {"t_c", "contact time of a pair, damped [s]"},
+    {"gamma_n", "the paper's damping gamma_n [1/s] for this e"},
+    {"k_scaled", "k_n d / (m g): the stiffness in wetgran's units"},
+    {"t_contact", "scene key t_contact [sqrt(d/g)]"},
+    {"f_b", "scene key f_b = F_coh / (m g)"},
+    {"s_crit", "scene key s_crit = l_c / d"},
+    {"w_coh", "W_coh = F_coh l_c [J]"},
+    {"e_cb", "W_coh in m g d (the scene's E_cb)"},
+};
+
+static int si_eval(const void *params, wg_theory_result *r)
+{
+  const si_params *p = params;
+  if (!(p->d > 0)) return domain_error(r, "d", p->d, "must be > 0");
+  if (!(p->rho > 0)) return domain_error(r, "rho", p->rho, "must be > 0");
+  if (!(p->g > 0)) return domain_error(r, "g", p->g, "must be > 0");
+  if (!(p->k_n > 0)) return domain_error(r, "k_n", p->k_n, "must be > 0");
+  if (!(p->e > 0 && p->e <= 1)) return domain_error(r, "e", p->e, "must lie in (0, 1]");
+  if (!(p->f_coh >= 0)) return domain_error(r, "f_coh", p->f_coh, "must be >= 0");
+  if (!(p->l_c >= 0)) return domain_error(r, "l_c", p->l_c, "must be >= 0");
+  double m = p->rho * M_PI * p->d * p->d * p->d / 6, w = m * p->g, tau = sqrt(p->d / p->g);
+  double omega0 = sqrt(p->k_n / (m / 2)), L = -log(p->e);
+  double t_c = sqrt(M_PI * M_PI + L * L) / omega0;
+  put(r, "mass", m);
+  put(r, "weight", w);
+  put(r, "time_unit", tau);
+  put(r, "speed_unit", sqrt(p->g * p->d));
+  put(r, "t_c_undamped", M_PI / omega0);
+  put(r, "t_c", t_c);
+  put(r, "gamma_n", 2 * omega0 * L / sqrt(M_PI * M_PI + L * L));
+  put(r, "k_scaled", p->k_n * p->d / w);
+  put(r, "t_contact", t_c / tau);
+  put(r, "f_b", p->f_coh / w);
+  put(r, "s_crit", p->l_c / p->d);
+  put(r, "w_coh", p->f_coh * p->l_c);
+  put(r, "e_cb", p->f_coh * p->l_c / (w * p->d));
+  return 0;
+}
+
+/* ------------------------------------------------------------------------------------------
    The models, in the order of the thesis, and the command line. */
 #define N_OF(a) (sizeof(a) / sizeof *(a))
 #define MODEL(name, summary, k, o, eval) {name, summary, k, N_OF(k), o, N_OF(o), eval}
@@ -960,6 +1028,8 @@ static const wg_theory_model models[] = {
     MODEL("chain", "chain in a cosine shear field: Euler-Lagrange shape (Eq. 7.3-7.5), F~_chain "
           "(Eq. 7.6-7.8), bound (Eq. 7.9)", chain_keys, chain_outputs, chain_eval),
     MODEL("a2", "Sonine coefficient a_2 of a driven wet granular gas (Eq. A.59, A.60)", a2_keys, a2_outputs, a2_eval),
+    MODEL("si", "the streams paper's SI table (Waitukaitis et al. 2011) as scene keys: t_contact, f_b, "
+          "s_crit", si_keys, si_outputs, si_eval),
 };
 
 typedef union wg_theory_params {
@@ -970,6 +1040,7 @@ typedef union wg_theory_params {
   plug_params plug;
   chain_params chain;
   a2_params a2;
+  si_params si;
 } wg_theory_params;
 
 static double *param_slot(wg_theory_params *p, const wg_theory_key *k)

@@ -235,4 +235,19 @@ check "value outside the model's domain: exit 1, key and value named" bash -c "[
 check "a curve entering an invalid domain stops with exit 1" bash -c "[ $rc -eq 1 ] && grep -q 'eps = 0' '$tmp/err'"
 n=$("$th" a2 eps_cb=1:0:-0.25 | awk 'NR > 1' | wc -l)
 check "a negative step runs downwards (5 points from 1 to 0)" test "$n" -eq 5
+# --- si: the streams paper's table in wetgran's units ------------------------------------------
+m=$(v si mass); w=$(v si weight); t0=$(v si t_c_undamped)
+check "si: d = 200 um glass: m = 1.047e-8 kg, m g = 102.7 nN, pi/omega0 = 10.2 us (notes-streams 1.10): $m $w $t0" \
+  bash -c "$(declare -f near); near $m 1.0472e-8 1e-12 && near $w 1.0273e-7 1e-11 && near $t0 1.0166e-5 1e-9"
+for pair in "0.88 2.51e4" "0.73 6.16e4" "0.40 1.73e5" "0.04 4.42e5"; do
+  set -- $pair; gn=$(v si e=$1 gamma_n)
+  check "si: e = $1: gamma_n = $gn 1/s against the notes' $2 (0.5 %)" awk -v a="$gn" -v b="$2" 'BEGIN { d = a / b - 1; exit !(d < 0.005 && d > -0.005) }'
+done
+tc=$(v si e=0.04 t_c); check "si: e = 0.04: the damped contact lasts $tc s (notes: 14.6 us)" near "$tc" 1.46e-5 1e-7
+wc=$(v si w_coh); check "si: W_coh = F_coh l_c = 1e-14 J at 100 nN, 100 nm ($wc)" near "$wc" 1e-14 1e-20
+# round trip: the engine's linear law k = (1/2)(pi^2 + ln^2 e) / t_contact^2 gives back k_n d / (m g)
+k=$(v si e=0.6 k_scaled); tcs=$(v si e=0.6 t_contact)
+kk=$(awk -v t="$tcs" 'BEGIN { l = log(0.6); printf "%.10g", 0.5 * (3.14159265358979 ^ 2 + l * l) / (t * t) }')
+check "si: t_contact = $tcs makes the engine's stiffness $kk = k_n d / (m g) = $k" awk -v a="$kk" -v b="$k" 'BEGIN { d = a / b - 1; exit !(d < 1e-8 && d > -1e-8) }'
+
 summary
