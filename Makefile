@@ -126,6 +126,7 @@ test: deps
 	./tests/run.sh $(BUILD)/tests $(BIN)
 
 bench: deps
+	@./scripts/install-deps.sh --bench
 	$(MAKE) tools $(BENCH_BIN)
 	EDMD_SRC="$(EDMD_SRC)" ./tests/bench/run.sh $(BUILD)/bench $(BIN)
 

@@ -2,6 +2,8 @@
 # Installs the Debian packages wetgran needs, if any is missing.  Run as root (or with sudo).
 set -e
 PKGS="build-essential pkg-config libhdf5-dev hdf5-tools libgsl-dev gnuplot-nox libqhull-dev libfftw3-dev python3-h5py time"
+# --bench: also the peers `make bench` runs beside wetgran (LAMMPS)
+[ "${1:-}" = --bench ] && PKGS="$PKGS lammps"
 missing=""
 for p in $PKGS; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"

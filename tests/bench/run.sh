@@ -6,7 +6,8 @@
 # BENCH_ONLY=lists only neighbour lists against cells (lists.sh, REPS); BENCH_ONLY=rates only
 # the event rates (shakers, gas, the Leidenfrost column, the shear field's hooks, wall solver, td);
 # BENCH_ONLY=td_shaker only the last part
-# (time-driven shaker: Verlet and Gear).
+# (time-driven shaker: Verlet and Gear); BENCH_ONLY=lammps only the time-driven engine beside
+# LAMMPS (lammps.sh, REPS).
 set -eu
 benchdir=${1:?}; bindir=$(cd "${2:?}" && pwd)
 here=$(cd "$(dirname "$0")" && pwd)
@@ -42,6 +43,12 @@ if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = peers ]; then
 echo "== the event-driven engine beside EDMD and beside its own baseline commit (tests/bench/peers.sh)"
 "$here/peers.sh" "$bindir"
 [ "${BENCH_ONLY:-}" = peers ] && exit 0
+fi
+
+if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = lammps ]; then
+echo "== the time-driven engine beside LAMMPS, frictionless gas of 10 648 spheres (tests/bench/lammps.sh)"
+"$here/lammps.sh" "$bindir"
+[ "${BENCH_ONLY:-}" = lammps ] && exit 0
 fi
 
 if [ -z "${BENCH_ONLY:-}" ] || [ "${BENCH_ONLY:-}" = lists ]; then

@@ -1,0 +1,69 @@
+#!/bin/bash
+# lammps.sh TOOL_BIN_DIR: wetgran's time-driven engine beside LAMMPS (Debian `lammps`, the peer
+# a user of soft-sphere DEM would pick) on the same system, one program after the other, best
+# of REPS (default 3): 22^3 = 10 648 frictionless spheres (d = m = 1) in a periodic cube at
+# phi = 0.45, started on a simple cubic lattice with Gaussian velocities (T = 1), the linear
+# spring-dashpot with e = 0.9 and contact time 0.005 for two unit masses (LAMMPS `gran/hooke`
+# with k_n = 1.976e5, gamma_n = 42.15 /time, no tangential force), dt = 1e-4, skin 0.1, 20 000
+# steps.  Rates are atom-steps per second of wall time (LAMMPS: its loop time; wetgran: the
+# run's, set-up and time series included).  Without `lmp` the LAMMPS column is nan and one
+# line says so.  Part of `make bench`, or BENCH_ONLY=lammps.  Writes tests/bench/out/lammps.tsv.
+set -euo pipefail
+case ${1:-} in --help|-h) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
+bindir=$(cd "${1:?usage: lammps.sh TOOL_BIN_DIR}" && pwd)
+here=$(cd "$(dirname "$0")" && pwd)
+S=$here/../../sim/scenes
+out=$here/out
+mkdir -p "$out"
+reps=${REPS:-3}
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+n=10648 steps=20000
+# the linear law of wetgran's scene (t_contact for m_eff = 1/2, restitution e), in LAMMPS's terms
+read -r kn gn < <(awk 'BEGIN { pi = atan2(0, -1); e = 0.9; tc = 0.005; l = -log(e)
+  k = 0.5 * (pi * pi + l * l) / (tc * tc); w0 = sqrt(k / 0.5); printf "%.10g %.10g\n", k, 2 * w0 * l / sqrt(pi * pi + l * l) }')
+cat > "$tmp/gas.in" <<LMP
+units           lj
+atom_style      sphere
+boundary        p p p
+comm_modify     vel yes
+variable        a equal (${n}/(0.45*6/PI))^(1.0/3.0)/22
+lattice         sc \${a}
+region          box block 0 22 0 22 0 22
+create_box      1 box
+create_atoms    1 box
+set             type 1 diameter 1.0
+set             type 1 density 1.909859317102744
+velocity        all create 1.0 12345 dist gaussian mom yes
+pair_style      gran/hooke ${kn} 0.0 ${gn} 0.0 0.0 0
+pair_coeff      * *
+neighbor        0.1 bin
+neigh_modify    delay 0 every 1 check yes
+fix             1 all nve/sphere
+timestep        1e-4
+thermo          ${steps}
+run             ${steps}
+LMP
+lammps_rate() {
+  (cd "$tmp" && lmp -in gas.in -log none -echo none > lmp.out 2>&1) || { cat "$tmp/lmp.out" >&2; return 1; }
+  awk -v n=$n -v s=$steps '/^Loop time of/ { printf "%.6g\n", n * s / $4 }' "$tmp/lmp.out"
+}
+wetgran_rate() {
+  "$bindir/wetgran-run" "$S/gas3d.ini" engine=td n=$n phi=0.45 eps=0.9 contact=linear t_contact=0.005 \
+    steps_per_contact=50 skin=0.1 t_end=2 dt_series=1 dt_checkpoint=0 -q -o "$tmp/td.h5" 2> "$tmp/err"
+  rm -f "$tmp/td.h5"
+  grep -o 'particle_steps_per_s=[^ ]*' "$tmp/err" | cut -d= -f2
+}
+have_lmp=1
+command -v lmp > /dev/null || { have_lmp=0; echo "lammps.sh: no 'lmp' (Debian package lammps: scripts/install-deps.sh --bench); LAMMPS column nan"; }
+best_w=0 best_l=nan
+for r in $(seq "$reps"); do
+  w=$(wetgran_rate); best_w=$(awk -v a="$w" -v b="$best_w" 'BEGIN { print (a > b ? a : b) }')
+  if [ $have_lmp = 1 ]; then
+    l=$(lammps_rate); best_l=$(awk -v a="$l" -v b="$best_l" 'BEGIN { print (b == "nan" || a > b ? a : b) }')
+  fi
+  echo "  round $r: wetgran ${w} atom-steps/s, LAMMPS ${l:-nan}"
+done
+{ echo -e "system\tn\tsteps\twetgran_atom_steps_per_s\tlammps_atom_steps_per_s\twetgran_over_lammps"
+  awk -v w="$best_w" -v l="$best_l" -v n=$n -v s=$steps 'BEGIN { printf "frictionless gas, phi = 0.45\t%d\t%d\t%.4g\t%s\t%s\n", n, s, w, l, (l == "nan" ? "nan" : sprintf("%.3f", w / l)) }'
+} | tee "$out/lammps.tsv"
