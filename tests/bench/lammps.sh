@@ -6,7 +6,9 @@
 # spring-dashpot with e = 0.9 and contact time 0.005 for two unit masses (LAMMPS `gran/hooke`
 # with k_n = 1.976e5, gamma_n = 42.15 /time, no tangential force), dt = 1e-4, skin 0.1, 20 000
 # steps.  Rates are atom-steps per second of wall time (LAMMPS: its loop time; wetgran: the
-# run's, set-up and time series included).  Without `lmp` the LAMMPS column is nan and one
+# run's, set-up and time series included).  The two cool alike (Haff): their temperatures at
+# the end go beside the rates, as the check that the systems are the same.  (In LAMMPS's LJ
+# units `lattice sc X` takes a density, not a spacing.)  Without `lmp` the LAMMPS column is nan and one
 # line says so.  Part of `make bench`, or BENCH_ONLY=lammps.  Writes tests/bench/out/lammps.tsv.
 set -euo pipefail
 case ${1:-} in --help|-h) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;; esac
@@ -28,7 +30,8 @@ atom_style      sphere
 boundary        p p p
 comm_modify     vel yes
 variable        a equal (${n}/(0.45*6/PI))^(1.0/3.0)/22
-lattice         sc \${a}
+variable        rho equal 1.0/(\${a}*\${a}*\${a})
+lattice         sc \${rho}
 region          box block 0 22 0 22 0 22
 create_box      1 box
 create_atoms    1 box
@@ -46,24 +49,25 @@ run             ${steps}
 LMP
 lammps_rate() {
   (cd "$tmp" && lmp -in gas.in -log none -echo none > lmp.out 2>&1) || { cat "$tmp/lmp.out" >&2; return 1; }
-  awk -v n=$n -v s=$steps '/^Loop time of/ { printf "%.6g\n", n * s / $4 }' "$tmp/lmp.out"
+  awk -v n=$n -v s=$steps '$1 == s { t = $2 } /^Loop time of/ { printf "%.6g %.5g\n", n * s / $4, t }' "$tmp/lmp.out"
 }
 wetgran_rate() {
   "$bindir/wetgran-run" "$S/gas3d.ini" engine=td n=$n phi=0.45 eps=0.9 contact=linear t_contact=0.005 \
     steps_per_contact=50 skin=0.1 t_end=2 dt_series=1 dt_checkpoint=0 -q -o "$tmp/td.h5" 2> "$tmp/err"
+  echo "$(grep -o 'particle_steps_per_s=[^ ]*' "$tmp/err" | cut -d= -f2) $("$bindir/wetgran-series" "$tmp/td.h5" temperature | tail -n 1 | cut -f2)"
   rm -f "$tmp/td.h5"
-  grep -o 'particle_steps_per_s=[^ ]*' "$tmp/err" | cut -d= -f2
 }
 have_lmp=1
 command -v lmp > /dev/null || { have_lmp=0; echo "lammps.sh: no 'lmp' (Debian package lammps: scripts/install-deps.sh --bench); LAMMPS column nan"; }
-best_w=0 best_l=nan
+best_w=0 best_l=nan tw=nan tl=nan
 for r in $(seq "$reps"); do
-  w=$(wetgran_rate); best_w=$(awk -v a="$w" -v b="$best_w" 'BEGIN { print (a > b ? a : b) }')
+  read -r w tw < <(wetgran_rate); best_w=$(awk -v a="$w" -v b="$best_w" 'BEGIN { print (a > b ? a : b) }')
+  l=nan
   if [ $have_lmp = 1 ]; then
-    l=$(lammps_rate); best_l=$(awk -v a="$l" -v b="$best_l" 'BEGIN { print (b == "nan" || a > b ? a : b) }')
+    read -r l tl < <(lammps_rate); best_l=$(awk -v a="$l" -v b="$best_l" 'BEGIN { print (b == "nan" || a > b ? a : b) }')
   fi
-  echo "  round $r: wetgran ${w} atom-steps/s, LAMMPS ${l:-nan}"
+  echo "  round $r: wetgran $w atom-steps/s (T at the end $tw), LAMMPS $l (T $tl)"
 done
-{ echo -e "system\tn\tsteps\twetgran_atom_steps_per_s\tlammps_atom_steps_per_s\twetgran_over_lammps"
-  awk -v w="$best_w" -v l="$best_l" -v n=$n -v s=$steps 'BEGIN { printf "frictionless gas, phi = 0.45\t%d\t%d\t%.4g\t%s\t%s\n", n, s, w, l, (l == "nan" ? "nan" : sprintf("%.3f", w / l)) }'
+{ echo -e "system\tn\tsteps\twetgran_atom_steps_per_s\tlammps_atom_steps_per_s\twetgran_over_lammps\twetgran_T_end\tlammps_T_end"
+  awk -v w="$best_w" -v l="$best_l" -v n=$n -v s=$steps -v tw="$tw" -v tl="$tl" 'BEGIN { printf "frictionless gas, phi = 0.45\t%d\t%d\t%.4g\t%s\t%s\t%s\t%s\n", n, s, w, l, (l == "nan" ? "nan" : sprintf("%.3f", w / l)), tw, tl }'
 } | tee "$out/lammps.tsv"
