@@ -408,8 +408,27 @@ static void test_missing_file(void)
   TH_CHECK(rc == WG_EIO && strstr(msg, "/nonexistent/dir/scene.ini"), "missing file: %s", msg);
 }
 
+/* Checkpoint fingerprints: equal but for keys at their fixed defaults */
+static void test_same_configuration(void)
+{
+  const char *a = "dim = 2\nn = 10\neps = 1\n";
+  TH_CHECK(wg_scene_same_configuration(a, a), "same configuration: identical texts");
+  TH_CHECK(wg_scene_same_configuration(a, "dim = 2\nn = 10\nshell = 0\neps = 1\n"),
+           "same configuration: an extra 'shell = 0' (its default) is the same");
+  TH_CHECK(wg_scene_same_configuration("dim = 2\nn = 10\nnoise = 0\neps = 1\n", a),
+           "same configuration: a missing 'noise = 0' is the same");
+  TH_CHECK(!wg_scene_same_configuration(a, "dim = 2\nn = 10\nshell = 0.3\neps = 1\n"),
+           "other configuration: 'shell = 0.3' is not the default");
+  TH_CHECK(!wg_scene_same_configuration(a, "dim = 2\nn = 10\neps = 0.9\n"),
+           "other configuration: eps 0.9 against 1 (1 is eps's default, 0.9 is not)");
+  TH_CHECK(!wg_scene_same_configuration(a, "dim = 2\nn = 10\neps = 1\ngamma = 15\n"),
+           "other configuration: an extra key without a fixed default (gamma)");
+  TH_CHECK(!wg_scene_same_configuration(a, "dim = 2\nn = 11\neps = 1\n"), "other configuration: n 11 against 10");
+}
+
 int main(void)
 {
+  test_same_configuration();
   test_good_scene();
   test_bridge_forms();
   test_overrides();

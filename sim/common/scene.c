@@ -1190,6 +1190,57 @@ void wg_scene_print_keys(FILE *out)
   }
 }
 
+/* 1 if the line "key = value" (len characters) names a key with a fixed default at it */
+static int line_at_default(const char *line, size_t len)
+{
+  const char *eq = memchr(line, '=', len);
+  if (!eq || eq - line < 2 || eq[-1] != ' ' || (size_t)(eq - line) + 2 > len) return 0;
+  size_t klen = (size_t)(eq - line) - 1;
+  for (int k = 0; k < NKEYS; k++) {
+    if (strlen(keys[k].name) != klen || strncmp(keys[k].name, line, klen)) continue;
+    if (keys[k].def != DEF_VALUE) return 0;
+    wg_scene dflt;
+    memset(&dflt, 0, sizeof dflt);
+    void *p = (char *)&dflt + keys[k].offset;
+    switch (keys[k].type) {
+    case T_DOUBLE: *(double *)p = keys[k].dflt; break;
+    case T_LONG: *(long *)p = (long)keys[k].dflt; break;
+    case T_INT: case T_ENUM: *(int *)p = (int)keys[k].dflt; break;
+    case T_SEED: *(unsigned long long *)p = (unsigned long long)keys[k].dflt; break;
+    case T_PATH: break;
+    }
+    char buf[1100];
+    format_value(&dflt, k, buf, sizeof buf);
+    const char *value = eq + 2;
+    return strlen(buf) == len - (size_t)(value - line) && !strncmp(buf, value, strlen(buf));
+  }
+  return 0;
+}
+
+/* 1 if every line of a is in b or at its default */
+static int lines_covered(const char *a, const char *b)
+{
+  for (const char *l = a; *l;) {
+    const char *e = strchr(l, '\n');
+    size_t len = e ? (size_t)(e - l) : strlen(l);
+    int found = 0;
+    for (const char *m = b; *m && !found;) {
+      const char *f = strchr(m, '\n');
+      size_t mlen = f ? (size_t)(f - m) : strlen(m);
+      found = mlen == len && !strncmp(l, m, len);
+      m = f ? f + 1 : m + mlen;
+    }
+    if (len && !found && !line_at_default(l, len)) return 0;
+    l = e ? e + 1 : l + len;
+  }
+  return 1;
+}
+
+int wg_scene_same_configuration(const char *a, const char *b)
+{
+  return lines_covered(a, b) && lines_covered(b, a);
+}
+
 wg_key_kind wg_scene_key_kind(const char *key)
 {
   for (int k = 0; k < NKEYS; k++) {

@@ -137,6 +137,12 @@ int wg_scene_visit(const wg_scene *sc, wg_scene_visit_fn fn, void *user);
 typedef enum { WG_KEY_REAL, WG_KEY_INT, WG_KEY_UINT, WG_KEY_WORD } wg_key_kind;
 wg_key_kind wg_scene_key_kind(const char *key);
 
+/* Two texts of wg_scene_visit ("key = value" lines) name one configuration when they differ
+   only by lines of keys at their fixed defaults: a key added to wetgran after one was written,
+   or left out while off (shell, noise, the shear field's), means the same listed or not.
+   Checkpoints are matched so. */
+int wg_scene_same_configuration(const char *a, const char *b);
+
 /* A floor and a lid bound the container (shaker or box). */
 static inline int wg_scene_walled(const wg_scene *sc) { return sc->container != WG_CONTAINER_PERIODIC; }
 

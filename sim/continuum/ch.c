@@ -97,15 +97,24 @@ static void d_dx(const wg_ch *s, const double *in, double *out)
   }
 }
 
+/* hat = c's coefficients, transformed only when c was set anew */
+static void coefficients(wg_ch *s)
+{
+  if (s->hat_valid) return;
+  size_t n = (size_t)s->p.nx * s->p.nz;
+  memcpy(s->work, s->c, sizeof(double) * n);
+  forward(s);
+  memcpy(s->hat, s->work2, sizeof(double) * n);
+  s->hat_valid = 1;
+}
+
 void wg_ch_step(wg_ch *s)
 {
   const wg_ch_params *p = &s->p;
   size_t n = (size_t)p->nx * p->nz;
   double dt = p->dt, M = p->mobility;
   int advect = p->shear != 0 && p->nx > 1;
-  memcpy(s->work, s->c, sizeof(double) * n);
-  forward(s);
-  memcpy(s->hat, s->work2, sizeof(double) * n);
+  coefficients(s); /* after a step hat is c's already: one transform saved per step */
   for (size_t k = 0; k < n; k++) s->work[k] = f_prime(p, s->c[k]);
   forward(s);
   memcpy(s->fp, s->work2, sizeof(double) * n);
@@ -152,9 +161,8 @@ double wg_ch_mass(const wg_ch *s)
 static void laplacian(wg_ch *s)
 {
   size_t n = (size_t)s->p.nx * s->p.nz;
-  memcpy(s->work, s->c, sizeof(double) * n);
-  forward(s);
-  for (size_t k = 0; k < n; k++) s->work[k] = -s->k2[k] * s->work2[k];
+  coefficients(s);
+  for (size_t k = 0; k < n; k++) s->work[k] = -s->k2[k] * s->hat[k];
   backward(s);
 }
 
@@ -167,23 +175,23 @@ double wg_ch_grad2(wg_ch *s)
   return g / (double)n;
 }
 
-double wg_ch_free_energy(wg_ch *s)
+double wg_ch_bulk_energy(const wg_ch *s)
 {
   size_t n = (size_t)s->p.nx * s->p.nz;
   double f = 0;
   for (size_t k = 0; k < n; k++) f += f_bulk(&s->p, s->c[k]);
-  return f / (double)n + 0.5 * s->p.kappa * wg_ch_grad2(s);
+  return f / (double)n;
 }
+
+double wg_ch_free_energy(wg_ch *s) { return wg_ch_bulk_energy(s) + 0.5 * s->p.kappa * wg_ch_grad2(s); }
 
 double wg_ch_mode(wg_ch *s, int mx, int mz)
 {
-  size_t n = (size_t)s->p.nx * s->p.nz;
-  memcpy(s->work, s->c, sizeof(double) * n);
-  forward(s);
+  coefficients(s);
   /* R2HC of cos(2 pi mx x/lx) gives nx/2 (nx at mx = 0); REDFT10 of cos(pi mz z/lz) gives nz
      (2 nz at mz = 0) */
   double scale = (mx == 0 ? s->p.nx : 0.5 * s->p.nx) * (mz == 0 ? 2.0 * s->p.nz : s->p.nz);
-  return s->work2[(size_t)mx * s->p.nz + mz] / scale;
+  return s->hat[(size_t)mx * s->p.nz + mz] / scale;
 }
 
 void wg_ch_profile(const wg_ch *s, double *prof)

@@ -39,19 +39,24 @@ typedef struct wg_ch {
   double *kx;            /* kx per x index of the half-complex layout (signed: see ch.c) */
   fftw_plan fwd, bwd;    /* real <-> spectral, work -> work2 (unnormalised) */
   double norm;           /* 1 / (2 nx nz): bwd(fwd(x)) = x / norm */
+  int hat_valid;          /* hat holds c's coefficients (after a step); 0 when c was set anew */
   double t;
   long steps;
 } wg_ch;
 
+/* c is set by the caller after wg_ch_init (and may be set anew between steps: then clear
+   hat_valid). */
 int wg_ch_init(wg_ch *s, const wg_ch_params *p);
 void wg_ch_free(wg_ch *s);
 void wg_ch_step(wg_ch *s);
 
-/* Diagnostics, per unit area: mean c; free energy mean(f(c) + kappa |grad c|^2 / 2);
-   <|grad c|^2> (= -<c lap c>, the walls' and the period's boundary terms vanish). */
+/* Diagnostics, per unit area: mean c; the bulk energy mean f(c); <|grad c|^2> (= -<c lap c>,
+   the walls' and the period's boundary terms vanish); the free energy is their sum
+   bulk + kappa grad2 / 2. */
 double wg_ch_mass(const wg_ch *s);
-double wg_ch_free_energy(wg_ch *s);
+double wg_ch_bulk_energy(const wg_ch *s);
 double wg_ch_grad2(wg_ch *s);
+double wg_ch_free_energy(wg_ch *s);
 /* Amplitude a of the mode cos(2 pi mx x / lx) cos(pi mz z / lz) in c (mx, mz >= 0). */
 double wg_ch_mode(wg_ch *s, int mx, int mz);
 /* One step's gain of that mode around c_o in the linearised scheme. */

@@ -128,8 +128,8 @@ static int run(int argc, char **argv)
       wg_ch_profile(&s, prof);
       r[0] = s.t;
       r[1] = wg_ch_mass(&s);
-      r[2] = wg_ch_free_energy(&s);
       r[3] = wg_ch_grad2(&s);
+      r[2] = wg_ch_bulk_energy(&s) + 0.5 * p.kappa * r[3];
       r[4] = wg_ch_layers(prof, p.nz);
       r[5] = wg_ch_mode(&s, (int)V(K_MX), (int)V(K_MZ));
       if (!isfinite(r[1]) || !isfinite(r[2])) {

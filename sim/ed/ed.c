@@ -945,6 +945,15 @@ static void predict_all(wg_ed *s, long i, int reschedule)
   if (reschedule) schedule(s, i);
 }
 
+/* Every particle's events afresh (all trajectories changed, or the cells were rebuilt), and
+   the queue built over them. */
+static void predict_everything(wg_ed *s)
+{
+  for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
+  for (long i = 0; i < s->n; i++) s->key[i] = next_event_time(&s->ev[i]);
+  wg_evqueue_build(&s->queue);
+}
+
 /* ---------- events ---------- */
 
 /* Unit vector n from i to j at the current time and the normal relative velocity
@@ -1426,9 +1435,7 @@ static int noise_kick(wg_ed *s)
     }
     wg_ksum_add(&s->ledger.injected_noise, work);
   }
-  for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
-  for (long i = 0; i < s->n; i++) s->key[i] = next_event_time(&s->ev[i]);
-  wg_evqueue_build(&s->queue);
+  predict_everything(s);
   return WG_OK;
 }
 
@@ -1537,10 +1544,7 @@ int wg_ed_synchronize(wg_ed *s)
   }
   if (s->sheared)
     for (long i = 0; i < s->n; i++) s->bin[i] = wg_shear_bin_of(s->shear, s->p[i].r[0]);
-  for (long i = 0; i < s->n; i++) predict_all(s, i, 0);
-  for (long i = 0; i < s->n; i++)
-    s->key[i] = next_event_time(&s->ev[i]);
-  wg_evqueue_build(&s->queue);
+  predict_everything(s);
   s->watch_at = s->watch_at > s->since_sync ? s->watch_at - s->since_sync : 0;
   s->since_sync = 0;
   set_check_at(s);

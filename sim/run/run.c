@@ -169,15 +169,15 @@ static double temperature(const wg_run *run)
   return (mv2 - cm2 / msum) / (double)(n * dim); /* Eq. 3.2 */
 }
 
-/* The velocity distribution's a_2 (Eq. A.32: the fourth moment against a Gaussian's) and the
-   temperature, of every particle (free_only = 0) or of those without a bridge; velocities
-   relative to the centre of mass of all. */
-static double sonine_a2(wg_run *run, int free_only, double *temperature)
+/* The velocity distribution's a_2 (Eq. A.32: the fourth moment against a Gaussian's) of every
+   particle and of those without a bridge, and the latter's temperature; velocities relative
+   to the centre of mass of all, in one pass after it. */
+static void velocity_moments(wg_run *run, double *a2_all, double *a2_free, double *t_free)
 {
   int dim = run->sc->dim;
-  long n = run->sc->n, count = 0;
-  const uint8_t *nb = free_only ? bond_counts(run) : NULL;
-  double msum = 0, mv[3] = {0, 0, 0}, mu2 = 0, u2 = 0, u4 = 0;
+  long n = run->sc->n, nfree = 0;
+  const uint8_t *nb = bond_counts(run);
+  double msum = 0, mv[3] = {0, 0, 0}, u2 = 0, u4 = 0, f2 = 0, f4 = 0, mf2 = 0;
   for (long i = 0; i < n; i++) {
     double r[3], v[3], rad, m;
     particle(run, i, r, v, &rad, &m);
@@ -185,18 +185,21 @@ static double sonine_a2(wg_run *run, int free_only, double *temperature)
     for (int k = 0; k < dim; k++) mv[k] += m * v[k];
   }
   for (long i = 0; i < n; i++) {
-    if (nb && nb[i]) continue;
     double r[3], v[3], rad, m, w = 0;
     particle(run, i, r, v, &rad, &m);
     for (int k = 0; k < dim; k++) w += (v[k] - mv[k] / msum) * (v[k] - mv[k] / msum);
-    mu2 += m * w;
     u2 += w;
     u4 += w * w;
-    count++;
+    if (nb && nb[i]) continue;
+    mf2 += m * w;
+    f2 += w;
+    f4 += w * w;
+    nfree++;
   }
-  *temperature = count ? mu2 / (double)(count * dim) : NAN;
-  if (!(u2 > 0)) return NAN;
-  return (double)dim / (dim + 2) * (u4 / count) / ((u2 / count) * (u2 / count)) - 1;
+  double c = (double)dim / (dim + 2);
+  *a2_all = u2 > 0 ? c * (u4 / n) / ((u2 / n) * (u2 / n)) - 1 : NAN;
+  *a2_free = f2 > 0 ? c * (f4 / nfree) / ((f2 / nfree) * (f2 / nfree)) - 1 : NAN;
+  *t_free = nfree ? mf2 / (double)(nfree * dim) : NAN;
 }
 
 static int sample_series(wg_run *run)
@@ -255,9 +258,7 @@ static int sample_series(wg_run *run)
   row[COL_FIELD_WORK] = wg_ed_field_work(s);
   if (s->noise) {
     row[COL_INJ_NOISE] = wg_ksum_value(&s->ledger.injected_noise);
-    double tg;
-    row[COL_A2] = sonine_a2(run, 0, &tg);
-    row[COL_A2_FREE] = sonine_a2(run, 1, &row[COL_TG_FREE]);
+    velocity_moments(run, &row[COL_A2], &row[COL_A2_FREE], &row[COL_TG_FREE]);
   }
   if (s->shear) { /* Ch. 8's order parameters */
     double par = 0, perp = 0;
@@ -1236,16 +1237,6 @@ static int write_run_file(wg_run *run, double wall_s)
 
 /* ---------- driver ---------- */
 
-/* Two fingerprints name one configuration when they are equal but for a line "shell = 0",
-   which checkpoints written between the key's introduction and its omission at 0 carry. */
-static int same_configuration(const char *want, char *have)
-{
-  static const char omitted[] = "shell = 0\n";
-  char *at = strstr(have, omitted);
-  if (at && (at == have || at[-1] == '\n')) memmove(at, at + strlen(omitted), strlen(at + strlen(omitted)) + 1);
-  return strcmp(want, have) == 0;
-}
-
 int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt)
 {
   memset(run, 0, sizeof *run);
@@ -1273,7 +1264,7 @@ int wg_run_init(wg_run *run, wg_scene *sc, const wg_run_options *opt)
       wg_h5_read_attr_string(f, ".", "scene", have, sizeof have);
       wg_h5_close(f);
     }
-    int same = want && same_configuration(want, have);
+    int same = want && wg_scene_same_configuration(want, have);
     free(want);
     if (!same)
       return wg_error(WG_EINVAL, run->ckpt_path,
