@@ -67,6 +67,9 @@ int wg_cells_alloc(wg_cells *c, int dim, const double *lo, const double *len,
     c->w[a] = len[a] / (double)k;
     c->ncell *= k;
   }
+  if (c->ncell > INT32_MAX)
+    return wg_error(WG_ERANGE, "cells", "%ld cells: more than a cell index holds (2^31 - 1)",
+                    c->ncell);
   c->head = malloc(sizeof *c->head * (size_t)c->ncell);
   c->interior = malloc((size_t)c->ncell);
   c->next = malloc(sizeof *c->next * (size_t)n);
@@ -77,6 +80,9 @@ int wg_cells_alloc(wg_cells *c, int dim, const double *lo, const double *len,
     return wg_error(WG_ENOMEM, "cells", "cannot allocate %ld cells for %ld particles", c->ncell, n);
   }
   for (long k = 0; k < c->ncell; k++) c->head[k] = -1;
+  c->images_exact = 1;
+  for (int a = 0; a < dim; a++)
+    if (c->periodic[a] && c->nc[a] < 5) c->images_exact = 0;
   precompute_stencils(c);
   return WG_OK;
 }
@@ -93,12 +99,15 @@ static inline long flat(const wg_cells *c, const int *ix)
   return ix[0] + (long)c->nc[0] * (ix[1] + (long)c->nc[1] * ix[2]);
 }
 
+/* In 32 bits (a cell index is an int32_t, wg_cells_alloc): a 64-bit division costs several
+   times more, and cell crossings and stencils unflatten at every event. */
 static inline void unflat(const wg_cells *c, long cell, int *ix)
 {
-  ix[0] = (int)(cell % c->nc[0]);
-  cell /= c->nc[0];
-  ix[1] = (int)(cell % c->nc[1]);
-  ix[2] = (int)(cell / c->nc[1]);
+  uint32_t k = (uint32_t)cell, n0 = (uint32_t)c->nc[0], n1 = (uint32_t)c->nc[1];
+  ix[0] = (int)(k % n0);
+  k /= n0;
+  ix[1] = (int)(k % n1);
+  ix[2] = (int)(k / n1);
 }
 
 int wg_cells_coord(const wg_cells *c, long cell, int axis)
@@ -164,51 +173,87 @@ long wg_cells_step(const wg_cells *c, long cell, int axis, int dir, int *wrapped
 }
 
 /* Cells at offsets lo_off..hi_off per axis around ix, without duplicates: each axis's
-   coordinates are wrapped (periodic) or dropped (beyond a wall) once, then combined. */
-static int block(const wg_cells *c, const int *ix, const int *lo_off, const int *hi_off, long *out)
+   coordinates are wrapped (periodic) or dropped (beyond a wall) once, then combined.  With
+   `image`, image[3 m + a] is -1 where cell m lies across the periodic boundary below ix along
+   axis a (its grains are a box length too far up: subtract one from r_j - r_i), +1 across the
+   one above, else 0. */
+static int block(const wg_cells *c, const int *ix, const int *lo_off, const int *hi_off, long *out,
+                 int8_t *image)
 {
   long coord[3][3];
+  int8_t wrap[3][3];
   int count[3];
   long stride[3] = {1, c->nc[0], (long)c->nc[0] * c->nc[1]};
   for (int a = 0; a < 3; a++) {
     count[a] = 0;
     for (int d = lo_off[a]; d <= hi_off[a]; d++) {
       int x = ix[a] + d;
+      int8_t w = 0;
       if (x < 0 || x >= c->nc[a]) {
         if (!c->periodic[a]) continue;
+        w = x < 0 ? -1 : 1;
         x = x < 0 ? x + c->nc[a] : x - c->nc[a];
       }
+      wrap[a][count[a]] = w;
       coord[a][count[a]++] = x * stride[a];
     }
   }
   int m = 0;
   for (int z = 0; z < count[2]; z++)
     for (int y = 0; y < count[1]; y++)
-      for (int x = 0; x < count[0]; x++) out[m++] = coord[0][x] + coord[1][y] + coord[2][z];
+      for (int x = 0; x < count[0]; x++) {
+        if (image) {
+          image[3 * m] = wrap[0][x];
+          image[3 * m + 1] = wrap[1][y];
+          image[3 * m + 2] = wrap[2][z];
+        }
+        out[m++] = coord[0][x] + coord[1][y] + coord[2][z];
+      }
   return m;
+}
+
+static void stencil_offsets(const wg_cells *c, int *lo_off, int *hi_off)
+{
+  for (int a = 0; a < 3; a++) {
+    lo_off[a] = a < c->dim ? -1 : 0;
+    hi_off[a] = a < c->dim ? 1 : 0;
+  }
 }
 
 int wg_cells_stencil_general(const wg_cells *c, long cell, long *out)
 {
   int ix[3], lo_off[3], hi_off[3];
   unflat(c, cell, ix);
-  for (int a = 0; a < 3; a++) {
-    lo_off[a] = a < c->dim ? -1 : 0;
-    hi_off[a] = a < c->dim ? 1 : 0;
-  }
-  return block(c, ix, lo_off, hi_off, out);
+  stencil_offsets(c, lo_off, hi_off);
+  return block(c, ix, lo_off, hi_off, out, NULL);
+}
+
+int wg_cells_stencil_images(const wg_cells *c, long cell, long *out, int8_t *image)
+{
+  int ix[3], lo_off[3], hi_off[3];
+  unflat(c, cell, ix);
+  stencil_offsets(c, lo_off, hi_off);
+  return block(c, ix, lo_off, hi_off, out, image);
+}
+
+static int face_block(const wg_cells *c, long cell, int axis, int dir, long *out, int8_t *image)
+{
+  int ix[3], lo_off[3], hi_off[3];
+  unflat(c, cell, ix);
+  stencil_offsets(c, lo_off, hi_off);
+  lo_off[axis] = hi_off[axis] = dir;
+  return block(c, ix, lo_off, hi_off, out, image);
 }
 
 int wg_cells_face_general(const wg_cells *c, long cell, int axis, int dir, long *out)
 {
-  int ix[3], lo_off[3], hi_off[3];
-  unflat(c, cell, ix);
-  for (int a = 0; a < 3; a++) {
-    lo_off[a] = a < c->dim ? -1 : 0;
-    hi_off[a] = a < c->dim ? 1 : 0;
-  }
-  lo_off[axis] = hi_off[axis] = dir;
-  return block(c, ix, lo_off, hi_off, out);
+  return face_block(c, cell, axis, dir, out, NULL);
+}
+
+int wg_cells_face_images(const wg_cells *c, long cell, int axis, int dir, long *out,
+                         int8_t *image)
+{
+  return face_block(c, cell, axis, dir, out, image);
 }
 
 /* Crossing times of a height zb by z(tau) = z0 + v tau - g tau^2 / 2 (g > 0), counted only

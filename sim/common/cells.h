@@ -28,6 +28,10 @@ typedef struct wg_cells {
      behaviour of engine version c450a5b3a17e0edb, a known defect (docs/engines.md, "Cell
      crossings under gravity") kept until the archived figures are checked without it. */
   int turn_back;
+  /* 1 when every periodic axis has >= 5 cells: then the nearest image of a grain in the
+     stencil is the one of its cell (wg_cells_stencil_images) with a margin of half a cell,
+     so a separation needs no minimum-image test of its own */
+  int images_exact;
 } wg_cells;
 
 /* The grid over [lo, lo + len) with cells of width >= range; periodic axes need >= 3 cells. */
@@ -58,9 +62,17 @@ static inline int wg_cells_stencil(const wg_cells *c, long cell, long *out)
   for (int k = 0; k < c->stencil_size; k++) out[k] = cell + c->stencil_offset[k];
   return c->stencil_size;
 }
+/* The stencil (cells as wg_cells_stencil_general) and each cell's periodic image:
+   image[3 k + a] (-1, 0, +1) times the box length along axis a is to be added to a separation
+   r_j - r_i for the grains j of cell out[k].  Exact (the minimum image) when images_exact and
+   every grain lies in its cell. */
+int wg_cells_stencil_images(const wg_cells *c, long cell, long *out, int8_t *image);
 /* The 3^(dim-1) cells of the stencil's face one layer beyond cell along axis/dir: the cells
    that join the stencil when a particle has just stepped into `cell` moving along axis/dir. */
 int wg_cells_face_general(const wg_cells *c, long cell, int axis, int dir, long *out);
+/* The face with its cells' periodic images, as wg_cells_stencil_images. */
+int wg_cells_face_images(const wg_cells *c, long cell, int axis, int dir, long *out,
+                         int8_t *image);
 static inline int wg_cells_face(const wg_cells *c, long cell, int axis, int dir, long *out)
 {
   if (!c->interior[cell]) return wg_cells_face_general(c, cell, axis, dir, out);

@@ -404,9 +404,14 @@ static inline __attribute__((always_inline)) void
 pair_events(const wg_ed *s, const probe *pr, long j, double radius_j, double x, double y,
             double z, double u, double v, double w, candidate *best, const int dim, const int wet);
 
+/* How a pair's separation is brought to its periodic image: not at all (no periodic axis
+   between the two cells), by the image of j's cell (shift[a], 0 or +-box[a]), or by the
+   minimum-image test of each component. */
+enum { IMAGE_NONE, IMAGE_OF_CELL, IMAGE_NEAREST };
+
 static inline __attribute__((always_inline)) void
-predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int dim,
-             const int wet)
+predict_pair(const wg_ed *s, const probe *pr, long j, const double *shift, candidate *best,
+             const int dim, const int wet, const int gravity, const int image)
 {
   const wg_particle *b = &s->p[j];
   double dt = pr->now - b->t;
@@ -417,7 +422,7 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
     z = b->r[2] + b->v[2] * dt - pr->r[2];
     w = b->v[2] - pr->v[2];
   }
-  if (pr->g > 0) { /* the vertical axis is the last one */
+  if (gravity && pr->g > 0) { /* the vertical axis is the last one */
     if (dim == 3) {
       z -= 0.5 * pr->g * dt * dt;
       w -= pr->g * dt;
@@ -426,9 +431,15 @@ predict_pair(const wg_ed *s, const probe *pr, long j, candidate *best, const int
       v -= pr->g * dt;
     }
   }
-  if (pr->periodic[0]) x = min_image(x, pr->half[0], pr->box[0]);
-  if (pr->periodic[1]) y = min_image(y, pr->half[1], pr->box[1]);
-  if (dim == 3 && pr->periodic[2]) z = min_image(z, pr->half[2], pr->box[2]);
+  if (image == IMAGE_OF_CELL) { /* x - box is x + (-box): the same bits as min_image */
+    x += shift[0];
+    y += shift[1];
+    if (dim == 3) z += shift[2];
+  } else if (image == IMAGE_NEAREST) {
+    if (pr->periodic[0]) x = min_image(x, pr->half[0], pr->box[0]);
+    if (pr->periodic[1]) y = min_image(y, pr->half[1], pr->box[1]);
+    if (dim == 3 && pr->periodic[2]) z = min_image(z, pr->half[2], pr->box[2]);
+  }
   pair_events(s, pr, j, b->radius, x, y, z, u, v, w, best, dim, wet);
 }
 
@@ -458,8 +469,7 @@ pair_events(const wg_ed *s, const probe *pr, long j, double radius_j, double x, 
   double disc = bdot * bdot - a * c;
   double t = pr->now + c / (-bdot + sqrt(disc > 0 ? disc : 0));
   int hit = (bdot < 0) & (disc > 0);
-  t = keep_or_inf(hit, t);
-  if (t < best->t) {
+  if (hit & (t < best->t)) {
     best->t = t;
     best->type = WG_EV_COLLISION;
     best->partner = (int32_t)j;
@@ -485,17 +495,39 @@ static void predict_pairs_resting(const wg_ed *s, long i, const long *cells, int
     }                                                                                        \
   } while (0)
 
-/* The loop over the neighbours, specialised for each (dim, wet). */
-#define PAIRS_IN(DIM, WET)                                                                   \
+/* The grains of one cell against the probe, j's image given by IMAGE (shift: the cell's). */
+#define CELL_PAIRS(DIM, WET, GRAVITY, IMAGE)                                                 \
   do {                                                                                       \
-    for (int k = 0; k < ncells; k++)                                                         \
-      for (int32_t j = head[cells[k]]; j >= 0; j = next[j])                                 \
-        if (j != i) predict_pair(s, &pr, j, best, DIM, WET);                                \
+    for (int32_t j = head[cell]; j >= 0; j = next[j])                                        \
+      if (j != i) predict_pair(s, &pr, j, shift, best, DIM, WET, GRAVITY, IMAGE);           \
   } while (0)
 
-/* Every pair of particle i with the particles of the given cells. */
-static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncells,
-                             candidate *best)
+/* The loop over the cells, specialised for each (dim, wet) and for gravity; with cell
+   images, a cell away from every periodic boundary needs no image at all. */
+#define PAIRS_IN(DIM, WET)                                                                   \
+  do {                                                                                       \
+    for (int k = 0; k < ncells; k++) {                                                       \
+      long cell = cells[k];                                                                  \
+      if (!cell_images) {                                                                    \
+        CELL_PAIRS(DIM, WET, 1, IMAGE_NEAREST);                                              \
+        continue;                                                                            \
+      }                                                                                      \
+      const int8_t *im = image ? image + 3 * k : NULL;                                       \
+      if (!im || (im[0] | im[1] | im[2]) == 0) {                                             \
+        if (gravity) CELL_PAIRS(DIM, WET, 1, IMAGE_NONE);                                    \
+        else CELL_PAIRS(DIM, WET, 0, IMAGE_NONE);                                            \
+      } else {                                                                               \
+        for (int a = 0; a < 3; a++) shift[a] = im[a] * pr.box[a];                            \
+        CELL_PAIRS(DIM, WET, 1, IMAGE_OF_CELL);                                              \
+      }                                                                                      \
+    }                                                                                        \
+  } while (0)
+
+/* Every pair of particle i with the particles of the given cells; image: the cells'
+   periodic images (wg_cells_stencil_images), NULL when none of them lies across a periodic
+   boundary (or when the engine takes the nearest image pair by pair: !cell_images). */
+static void predict_pairs_in(const wg_ed *s, long i, const long *cells, const int8_t *image,
+                             int ncells, candidate *best)
 {
   if (SHEARED(s)) {
     predict_pairs_sheared(s, i, cells, ncells, best);
@@ -508,13 +540,21 @@ static void predict_pairs_in(const wg_ed *s, long i, const long *cells, int ncel
   probe pr;
   probe_at_now(s, i, &pr);
   const int32_t *head = s->cells.head, *next = s->cells.next;
-  BY_DIM_WET(s, PAIRS_IN);
+  const int gravity = pr.g > 0, cell_images = s->cell_images;
+  double shift[3] = {0, 0, 0};
+  candidate found = *best; /* a local: the loop's stores cannot alias the engine's arrays */
+  {
+    candidate *best = &found;
+    BY_DIM_WET(s, PAIRS_IN);
+  }
+  *best = found;
 }
 
 /* Every pair of particle i with its listed neighbours (neighbour lists). */
 #define PAIRS_LISTED(DIM, WET)                                                               \
   do {                                                                                       \
-    for (int k = 0; k < m; k++) predict_pair(s, &pr, nb[k], best, DIM, WET);               \
+    for (int k = 0; k < m; k++)                                                              \
+      predict_pair(s, &pr, nb[k], NULL, best, DIM, WET, 1, IMAGE_NEAREST);                  \
   } while (0)
 
 static void predict_pairs_listed(const wg_ed *s, long i, candidate *best)
@@ -529,7 +569,7 @@ static void predict_pairs_listed(const wg_ed *s, long i, candidate *best)
 /* The events of one pair (probe, j). */
 static void predict_pair_of(const wg_ed *s, const probe *pr, long j, candidate *best)
 {
-#define ONE_PAIR(DIM, WET) predict_pair(s, pr, j, best, DIM, WET)
+#define ONE_PAIR(DIM, WET) predict_pair(s, pr, j, NULL, best, DIM, WET, 1, IMAGE_NEAREST)
   BY_DIM_WET(s, ONE_PAIR);
 #undef ONE_PAIR
 }
@@ -789,7 +829,7 @@ static void predict_pairs_resting(const wg_ed *s, long i, const long *cells, int
     for (int32_t j = head[cells[k]]; j >= 0; j = next[j]) {
       if (j == i) continue;
       int qj = s->riding[j];
-      if (!qi && !qj) predict_pair(s, &pr, j, best, s->dim, s->wet);
+      if (!qi && !qj) predict_pair(s, &pr, j, NULL, best, s->dim, s->wet, 1, IMAGE_NEAREST);
       else if (qi && qj) predict_riders_pair(s, &pr, j, best);
       else predict_rest_pair(s, i, j, t_lift, best);
     }
@@ -937,8 +977,16 @@ static void predict_all(wg_ed *s, long i, int reschedule)
     set_phys(s, i, &best);
     predict_relist(s, i);
   } else {
-    int m = wg_cells_stencil(&s->cells, s->cells.cell[i], stencil);
-    predict_pairs_in(s, i, stencil, m, &best);
+    long cell = s->cells.cell[i];
+    int8_t image[3 * 27];
+    int m;
+    if (s->cells.interior[cell]) {
+      m = wg_cells_stencil(&s->cells, cell, stencil);
+      predict_pairs_in(s, i, stencil, NULL, m, &best);
+    } else {
+      m = wg_cells_stencil_images(&s->cells, cell, stencil, image);
+      predict_pairs_in(s, i, stencil, image, m, &best);
+    }
     set_phys(s, i, &best);
     predict_cell(s, i, -1, 0);
   }
@@ -1180,8 +1228,14 @@ static void cell_crossing(wg_ed *s, long i)
   /* only the particles in the newly adjacent cells can add an earlier event */
   candidate best = {s->ev[i].t_phys, s->ev[i].type, s->ev[i].partner};
   long face[9];
-  int m = wg_cells_face(&s->cells, to, axis, dir, face);
-  predict_pairs_in(s, i, face, m, &best);
+  int8_t image[3 * 9];
+  if (s->cells.interior[to]) {
+    int m = wg_cells_face(&s->cells, to, axis, dir, face);
+    predict_pairs_in(s, i, face, NULL, m, &best);
+  } else {
+    int m = wg_cells_face_images(&s->cells, to, axis, dir, face, image);
+    predict_pairs_in(s, i, face, image, m, &best);
+  }
   if (best.t < s->ev[i].t_phys) set_phys(s, i, &best);
   predict_cell(s, i, axis, -dir);
   schedule(s, i);
@@ -1692,6 +1746,8 @@ static int setup_cells(wg_ed *s)
   /* resting grains make no events (and so no synchronisations): without turn_back a grain
      falling onto them after its apex could pass through them unseen */
   s->cells.turn_back = s->riding != NULL;
+  if (st == WG_OK)
+    s->cell_images = s->cells.images_exact && !(s->g > 0 && s->periodic[s->up]);
   return st;
 }
 

@@ -113,6 +113,10 @@ typedef struct wg_ed {
                                   that a group of 8 is one cache line */
 
   wg_cells cells;              /* with neighbour lists: of the list centres */
+  /* 1: a pair's periodic image is its cell's (wg_cells_stencil_images), exact because every
+     grain lies in its cell (cells.images_exact, and no periodic axis along gravity, where a
+     grain that turns round may stay in the cell above: cells.turn_back) */
+  int cell_images;
   /* Neighbour lists (scene key shell > 0; nlist.h): each particle's events come from its list,
      and it is listed anew (a "relist", in place of cell crossings) when it leaves the region
      around its list centre.  listed = 0: the cells' stencils and cell crossings instead. */

@@ -40,27 +40,41 @@ size_t wg_evqueue_bytes(const wg_evqueue *q)
   return total * sizeof(wg_evqueue_node);
 }
 
-/* Earliest of the leaves first..first+count-1: scanned in index order with a strict <, so
-   the lowest index wins a tie. */
+/* Earliest of the leaves first..first+count-1, the lowest index among equal times.  Without
+   branches: which of eight times is the least is a coin toss for the branch predictor, so the
+   least time is taken first (a < b ? a : b, one minsd) and then the first index holding it. */
+static inline __attribute__((always_inline)) wg_evqueue_node
+min_of_leaves_n(const double *key, long first, const long count)
+{
+  const double *k8 = key + first;
+  double m = k8[0];
+  for (long k = 1; k < count; k++) m = k8[k] < m ? k8[k] : m;
+  long idx = count - 1;
+  for (long k = count - 2; k >= 0; k--) idx = k8[k] == m ? k : idx;
+  return (wg_evqueue_node){m, (int32_t)(first + idx)};
+}
+
+/* The same, unrolled for a whole group of FAN. */
 static inline wg_evqueue_node min_of_leaves(const double *key, long first, long count)
 {
-  wg_evqueue_node m = {key[first], (int32_t)first};
-  for (long k = 1; k < count; k++)
-    if (key[first + k] < m.key) {
-      m.key = key[first + k];
-      m.idx = (int32_t)(first + k);
-    }
-  return m;
+  return count == FAN ? min_of_leaves_n(key, first, FAN) : min_of_leaves_n(key, first, count);
 }
 
 /* Earliest of a group of nodes; their subtrees are in index order, so again the first
    among equal times has the lowest index. */
+static inline __attribute__((always_inline)) wg_evqueue_node
+min_of_nodes_n(const wg_evqueue_node *g, const long count)
+{
+  double m = g[0].key;
+  for (long k = 1; k < count; k++) m = g[k].key < m ? g[k].key : m;
+  long at = count - 1;
+  for (long k = count - 2; k >= 0; k--) at = g[k].key == m ? k : at;
+  return g[at];
+}
+
 static inline wg_evqueue_node min_of_nodes(const wg_evqueue_node *g, long count)
 {
-  wg_evqueue_node m = g[0];
-  for (long k = 1; k < count; k++)
-    if (g[k].key < m.key) m = g[k];
-  return m;
+  return count == FAN ? min_of_nodes_n(g, FAN) : min_of_nodes_n(g, count);
 }
 
 static inline long group_size(long width, long group) /* children of node `group` */
