@@ -117,6 +117,7 @@ typedef struct wg_ed {
      grain lies in its cell (cells.images_exact, and no periodic axis along gravity, where a
      grain that turns round may stay in the cell above: cells.turn_back) */
   int cell_images;
+  int gather;                  /* stencils in two passes, records fetched ahead (large systems) */
   /* Neighbour lists (scene key shell > 0; nlist.h): each particle's events come from its list,
      and it is listed anew (a "relist", in place of cell crossings) when it leaves the region
      around its list centre.  listed = 0: the cells' stencils and cell crossings instead. */
