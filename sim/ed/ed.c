@@ -473,7 +473,8 @@ pair_events(const wg_ed *s, const probe *pr, long j, double radius_j, double x, 
   double disc = bdot * bdot - a * c;
   double t = pr->now + c / (-bdot + sqrt(disc > 0 ? disc : 0));
   int hit = (bdot < 0) & (disc > 0);
-  if (hit & (t < best->t)) {
+  t = keep_or_inf(hit, t);
+  if (t < best->t) {
     best->t = t;
     best->type = WG_EV_COLLISION;
     best->partner = (int32_t)j;
