@@ -1,7 +1,7 @@
 #!/bin/sh
 # Installs the Debian packages wetgran needs, if any is missing.  Run as root (or with sudo).
 set -e
-PKGS="build-essential pkg-config libhdf5-dev hdf5-tools libgsl-dev gnuplot-nox libqhull-dev libfftw3-dev python3-h5py time"
+PKGS="build-essential pkg-config libhdf5-dev hdf5-tools libgsl-dev gnuplot-nox libqhull-dev libfftw3-dev python3-h5py time ffmpeg"
 # --bench: also the peers `make bench` runs beside wetgran (LAMMPS)
 [ "${1:-}" = --bench ] && PKGS="$PKGS lammps"
 missing=""
