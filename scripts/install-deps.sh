@@ -4,6 +4,9 @@ set -e
 PKGS="build-essential pkg-config libhdf5-dev hdf5-tools libgsl-dev gnuplot-nox libqhull-dev libfftw3-dev python3-h5py time ffmpeg"
 # --bench: also the peers `make bench` runs beside wetgran (LAMMPS)
 [ "${1:-}" = --bench ] && PKGS="$PKGS lammps"
+# --viz: ParaView for tests/test_xdmf.sh's pvpython checks (about 0.5 GB; xvfb: Debian's
+# ParaView renders through an X display)
+[ "${1:-}" = --viz ] && PKGS="$PKGS paraview python3-paraview xvfb xauth"
 missing=""
 for p in $PKGS; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
