@@ -3,6 +3,7 @@
 #   make demo       the main job: a small real figure (thesis Fig. 3.2, event-driven)
 #   make test       build and run the tests (SANITIZE=1: under ASan + UBSan)
 #   make bench      benchmarks (numbers go to tests/bench/out/; EDMD_SRC=<EDMD Single/> adds EDMD)
+#   make stress     the stress matrix: extreme drives, eps, densities, time steps (about a minute)
 #   make bench-large  free cooling of 2.5e6 wet spheres (minutes, ~0.7 GB; not in CI)
 #   make docs-figures  the pictures of docs/ (docs/figures/<id>.png)
 # make, demo, test, bench and the figures first install the Debian packages they need
@@ -46,7 +47,7 @@ TEST_BIN := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 BENCH_SRC := $(wildcard tests/bench/bench_*.c)
 BENCH_BIN := $(patsubst tests/bench/%.c,$(BUILD)/bench/%,$(BENCH_SRC))
 
-.PHONY: all deps demo test bench bench-large clean tools tests-build
+.PHONY: all deps demo test bench bench-large stress clean tools tests-build
 .DELETE_ON_ERROR:
 
 all: deps
@@ -129,6 +130,11 @@ bench: deps
 	@./scripts/install-deps.sh --bench
 	$(MAKE) tools $(BENCH_BIN)
 	EDMD_SRC="$(EDMD_SRC)" ./tests/bench/run.sh $(BUILD)/bench $(BIN)
+
+# The stress matrix (tests/stress.sh; its quick subset runs in `make test`): about a minute.
+stress: deps
+	$(MAKE) tools
+	./tests/stress.sh $(BIN)
 
 # Free cooling of 2.5e6 wet spheres (thesis Fig. 2.6): rate, memory, cluster picture; not in CI.
 bench-large: deps
