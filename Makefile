@@ -160,7 +160,10 @@ FIGURES_SKIP ?=
 figures: deps
 	$(MAKE) -j$(NPROC) tools
 	$(MAKE) -j$(NPROC) $(addprefix figure-,$(filter-out $(FIGURES_SKIP),$(FIGURES)))
+# SCHED=slurm: the figure's runs first as one Slurm job array (scripts/slurm-sweep), then make
+# finishes the figure from them
 $(addprefix figure-,$(FIGURES)): figure-%: | figure-tools
+	$(if $(filter slurm,$(SCHED)),./scripts/slurm-sweep experiments/$* PROFILE=$(PROFILE))
 	$(MAKE) -C experiments/$* PROFILE=$(PROFILE)
 borrowed = $(shell grep -E '^\s*(borrow|thresholds_from)\s*=' experiments/$(1)/$(PROFILE).conf 2>/dev/null | sed 's/^[^=]*=//')
 $(foreach f,$(FIGURES),$(eval figure-$(f): $(addprefix figure-,$(call borrowed,$(f)))))

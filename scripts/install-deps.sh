@@ -7,6 +7,8 @@ PKGS="build-essential pkg-config libhdf5-dev hdf5-tools libgsl-dev gnuplot-nox l
 # --viz: ParaView for tests/test_xdmf.sh's pvpython checks (about 0.5 GB; xvfb: Debian's
 # ParaView renders through an X display)
 [ "${1:-}" = --viz ] && PKGS="$PKGS paraview python3-paraview xvfb xauth"
+# --cluster: Slurm and munge, for tests/test_slurm.sh's single-node cluster (SCHED=slurm)
+[ "${1:-}" = --cluster ] && PKGS="$PKGS slurm-wlm munge"
 missing=""
 for p in $PKGS; do
   dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"
