@@ -1,6 +1,6 @@
 #!/bin/bash
 # Faults a week-long sweep meets: runs killed (SIGKILL) at random moments and resumed by the
-# same command, and a disk that fills up.
+# same command, a sweep's make killed and started again, and a disk that fills up.
 #
 # Kill and resume: three runs of the 2D shaker (500 time units) with a checkpoint every 2 time units are killed
 # again and again at random moments (0.05-0.6 s after each start, so kills land in the event
@@ -8,6 +8,10 @@
 # one completes; at least 50 kills in all.  After every kill the run file is absent or
 # complete, and the checkpoint absent or readable; the finished run is byte-identical to an
 # uninterrupted one.
+#
+# A sweep of six runs (a made-up experiment on experiments/common.mk) whose make is killed
+# with its runs once two are done: make then has only the others to make, finishes the sweep,
+# and leaves the finished runs' files untouched.
 #
 # Full disk: a run stopped after its first checkpoint is resumed on a small tmpfs that a filler
 # has filled: it must fail with a message naming the file and the reason, a non-zero exit,
@@ -55,6 +59,37 @@ done
 check "at least $min_kills kills in all ($kills)" test $kills -ge $min_kills
 check "after every kill the run file was absent or complete ($bad_output incomplete)" test $bad_output -eq 0
 check "after every kill the checkpoint was absent or readable ($bad_ckpt unreadable)" test $bad_ckpt -eq 0
+
+# ---- a sweep killed: make finishes it without redoing finished points ----
+top=$(cd "$(dirname "$0")/.." && pwd)
+ex=$tmp/sweep
+mkdir -p "$ex"
+echo "seeds = 1 2 3 4 5 6" > "$ex/quick.conf"
+cat > "$ex/Makefile" <<MK
+include $top/experiments/common.mk
+RUNS := \$(foreach s,\$(call conf,seeds),\$(RUNDIR)/seed\$(s).h5)
+runs: \$(RUNS)
+.PHONY: runs
+\$(RUNDIR)/seed%.h5: \$(CONF) \$(ENGINE) | \$(RUNDIR)
+	\$(WGRUN) \$(SCENES)/shake2d.ini t_end=40 profile_start=0 dt_checkpoint=5 seed=\$* -o \$@
+MK
+(cd "$ex" && exec setsid make -j1 runs > /dev/null 2>&1) &
+mpid=$!
+for i in $(seq 100); do # until two runs are done
+  [ "$(ls "$ex"/out/quick/runs/seed*.h5 2> /dev/null | wc -l)" -ge 2 ] && break
+  sleep 0.1
+done
+kill -KILL -- -$mpid 2> /dev/null; wait $mpid 2> /dev/null
+done_before=$(ls "$ex"/out/quick/runs/seed*.h5 2> /dev/null | wc -l)
+cp -p "$ex"/out/quick/runs/seed*.h5 "$tmp/" 2> /dev/null
+todo=$(make -n -C "$ex" runs 2> /dev/null | grep -c scripts/record)
+check "sweep killed after $done_before of 6 runs: make has only the other $todo to make" \
+  test "$done_before" -ge 2 -a "$todo" -eq $((6 - done_before))
+make -s -C "$ex" runs > /dev/null 2>&1
+same=0
+for f in "$tmp"/seed*.h5; do cmp -s "$f" "$ex/out/quick/runs/$(basename "$f")" && [ ! "$ex/out/quick/runs/$(basename "$f")" -nt "$f" ] && same=$((same + 1)); done
+check "make finishes the sweep ($(ls "$ex"/out/quick/runs/seed*.h5 | wc -l) runs) and leaves the $done_before finished ones as they were ($same)" \
+  test "$(ls "$ex"/out/quick/runs/seed*.h5 | wc -l)" -eq 6 -a "$same" -eq "$done_before"
 
 # ---- full disk ----
 fd=$tmp/disk
