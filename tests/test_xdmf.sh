@@ -49,7 +49,13 @@ if command -v pvpython > /dev/null && command -v xvfb-run > /dev/null; then
   for d in 2 3; do
     if [ $d = 2 ]; then view=$tmp/run2.xdmf nf=13; else view=$tmp/elsewhere/view3.xdmf nf=7; fi
     "$frame" "$tmp/run$d.h5" > "$tmp/frame$d.tsv"
-    (cd "$tmp" && timeout 300 xvfb-run -a pvpython "$here/pv_check.py" "$view" "$tmp/frame$d.tsv" "$tmp/pv$d.png" $nf 2> "$tmp/pv$d.err") > "$tmp/pv$d.out"
+    # xvfb-run's server is sometimes not ready when ParaView connects ("bad X server
+    # connection", about one start in four here): such a start is tried again, up to 3 times
+    for attempt in 1 2 3; do
+      (cd "$tmp" && timeout 300 xvfb-run -a pvpython "$here/pv_check.py" "$view" "$tmp/frame$d.tsv" "$tmp/pv$d.png" $nf 2> "$tmp/pv$d.err") > "$tmp/pv$d.out"
+      grep -q 'bad X server connection' "$tmp/pv$d.err" || break
+      echo "# ${d}D: the X server was not ready (start $attempt)"
+    done
     while read -r status what; do
       check "${d}D ParaView: $what" test "$status" = ok
     done < <(grep -E '^(ok|FAIL)' "$tmp/pv$d.out")
