@@ -4,6 +4,7 @@
    players take it).  The movie is written under a temporary name and renamed when complete;
    a progress line on a terminal, nothing in a pipe. */
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -43,10 +44,13 @@ static int read_frame(movie_run *m, long k, double *t)
   return st;
 }
 
-static int run_command(const char *cmd)
+/* The colour of grain i in the frame read last: its bridge count, or its speed. */
+static double colour_of(const movie_run *m, long i, int by_speed)
 {
-  int rc = system(cmd);
-  return rc == 0 ? WG_OK : WG_EFAIL;
+  if (!by_speed) return (double)m->nb[i];
+  double s2 = 0;
+  for (int a = 0; a < m->dim; a++) s2 += m->v[i * m->dim + a] * m->v[i * m->dim + a];
+  return sqrt(s2);
 }
 
 int main(int argc, char **argv)
@@ -92,6 +96,7 @@ int main(int argc, char **argv)
     fprintf(stderr, "wetgran-movie: --fps in (0, 120], --width in [64, 7680], --color bridges or speed\n");
     return 2;
   }
+  int by_speed = !strcmp(color, "speed");
   if (system("command -v gnuplot > /dev/null && command -v ffmpeg > /dev/null") != 0) {
     fprintf(stderr, "wetgran-movie: needs gnuplot and ffmpeg on the PATH (scripts/install-deps.sh)\n");
     return 1;
@@ -119,7 +124,9 @@ int main(int argc, char **argv)
   m.v = malloc(sizeof(double) * (size_t)(m.n * m.dim));
   m.d = malloc(sizeof(double) * (size_t)m.n);
   m.nb = malloc((size_t)m.n);
-  char dir[] = "/tmp/wetgran-movie.XXXXXX";
+  char dir[PATH_MAX];
+  const char *tmpdir = getenv("TMPDIR");
+  snprintf(dir, sizeof dir, "%s/wetgran-movie.XXXXXX", tmpdir && *tmpdir ? tmpdir : "/tmp");
   int st = m.r && m.v && m.d && m.nb ? WG_OK : WG_ENOMEM;
   if (st == WG_OK) st = wg_h5_read(m.f, "/particles/all/diameter", H5T_NATIVE_DOUBLE, m.d);
   if (st == WG_OK && !mkdtemp(dir)) {
@@ -132,13 +139,12 @@ int main(int argc, char **argv)
   for (long k = 0; k < m.nf && st == WG_OK; k++) {
     st = read_frame(&m, k, &t);
     for (long i = 0; st == WG_OK && i < m.n; i++) {
-      double xy[2] = {m.r[i * m.dim], m.r[i * m.dim + up]}, rad = 0.5 * m.d[i], s2 = 0;
+      double xy[2] = {m.r[i * m.dim], m.r[i * m.dim + up]}, rad = 0.5 * m.d[i];
       for (int a = 0; a < 2; a++) {
         lo[a] = fmin(lo[a], xy[a] - rad);
         hi[a] = fmax(hi[a], xy[a] + rad);
       }
-      for (int a = 0; a < m.dim; a++) s2 += m.v[i * m.dim + a] * m.v[i * m.dim + a];
-      cmax = fmax(cmax, strcmp(color, "speed") ? (double)m.nb[i] : sqrt(s2));
+      cmax = fmax(cmax, colour_of(&m, i, by_speed));
     }
   }
   FILE *gp = NULL;
@@ -158,7 +164,7 @@ int main(int argc, char **argv)
               hi[0], lo[1], hi[1]);
       fprintf(gp, "set xlabel 'x [d]'\nset ylabel 'z [d]'\nset cbrange [0:%.10g]\n", cmax);
       fprintf(gp, "set cblabel '%s'\nset palette rgb 33,13,10\nunset key\n",
-              strcmp(color, "speed") ? "bridges per grain" : "speed [sqrt(g d)]");
+              by_speed ? "speed [sqrt(g d)]" : "bridges per grain");
     }
   }
   int tty = !quiet && isatty(2);
@@ -173,12 +179,9 @@ int main(int argc, char **argv)
       st = WG_EIO;
       break;
     }
-    for (long i = 0; i < m.n; i++) {
-      double s2 = 0;
-      for (int a = 0; a < m.dim; a++) s2 += m.v[i * m.dim + a] * m.v[i * m.dim + a];
+    for (long i = 0; i < m.n; i++)
       fprintf(fd, "%.8g\t%.8g\t%.6g\t%.6g\n", m.r[i * m.dim], m.r[i * m.dim + up], 0.5 * m.d[i],
-              strcmp(color, "speed") ? (double)m.nb[i] : sqrt(s2));
-    }
+              colour_of(&m, i, by_speed));
     if (fclose(fd) != 0) {
       fprintf(stderr, "wetgran-movie: %s: %s\n", dat, strerror(errno));
       st = WG_EIO;
@@ -206,7 +209,7 @@ int main(int argc, char **argv)
     if (strchr(out, '\'')) {
       fprintf(stderr, "wetgran-movie: %s: a quote in the movie's name is not taken\n", out);
       st = WG_EINVAL;
-    } else if (run_command(cmd) != WG_OK) {
+    } else if (system(cmd) != 0) {
       fprintf(stderr, "wetgran-movie: %s: ffmpeg failed to encode the frames\n", out);
       remove(tmp);
       st = WG_EFAIL;

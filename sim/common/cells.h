@@ -81,6 +81,21 @@ static inline int wg_cells_face(const wg_cells *c, long cell, int axis, int dir,
   return c->face_size;
 }
 
+/* The stencil, or (axis >= 0) the face of wg_cells_face, with the periodic images of its
+   cells in `image` (three per cell: 3 x 27, or 3 x 9 for a face).  *images is NULL for an
+   interior cell, whose stencil crosses no boundary, else image. */
+static inline int wg_cells_imaged(const wg_cells *c, long cell, int axis, int dir, long *out,
+                                  int8_t *image, const int8_t **images)
+{
+  if (c->interior[cell]) {
+    *images = NULL;
+    return axis < 0 ? wg_cells_stencil(c, cell, out) : wg_cells_face(c, cell, axis, dir, out);
+  }
+  *images = image;
+  return axis < 0 ? wg_cells_stencil_images(c, cell, out, image)
+                  : wg_cells_face_images(c, cell, axis, dir, out, image);
+}
+
 /* Time, counted from the particle's reference point r, v (gravity g along -axis dim-1), at
    which it leaves `cell`, not earlier than tau_now; *axis and *dir tell through which face.
    The face (skip_axis, skip_dir) is left out (skip_axis = -1: none): the one just crossed,

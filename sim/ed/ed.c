@@ -1005,16 +1005,10 @@ static void predict_all(wg_ed *s, long i, int reschedule)
     set_phys(s, i, &best);
     predict_relist(s, i);
   } else {
-    long cell = s->cells.cell[i];
     int8_t image[3 * 27];
-    int m;
-    if (s->cells.interior[cell]) {
-      m = wg_cells_stencil(&s->cells, cell, stencil);
-      predict_pairs_in(s, i, stencil, NULL, m, &best);
-    } else {
-      m = wg_cells_stencil_images(&s->cells, cell, stencil, image);
-      predict_pairs_in(s, i, stencil, image, m, &best);
-    }
+    const int8_t *images;
+    int m = wg_cells_imaged(&s->cells, s->cells.cell[i], -1, 0, stencil, image, &images);
+    predict_pairs_in(s, i, stencil, images, m, &best);
     set_phys(s, i, &best);
     predict_cell(s, i, -1, 0);
   }
@@ -1257,13 +1251,9 @@ static void cell_crossing(wg_ed *s, long i)
   candidate best = {s->ev[i].t_phys, s->ev[i].type, s->ev[i].partner};
   long face[9];
   int8_t image[3 * 9];
-  if (s->cells.interior[to]) {
-    int m = wg_cells_face(&s->cells, to, axis, dir, face);
-    predict_pairs_in(s, i, face, NULL, m, &best);
-  } else {
-    int m = wg_cells_face_images(&s->cells, to, axis, dir, face, image);
-    predict_pairs_in(s, i, face, image, m, &best);
-  }
+  const int8_t *images;
+  int m = wg_cells_imaged(&s->cells, to, axis, dir, face, image, &images);
+  predict_pairs_in(s, i, face, images, m, &best);
   if (best.t < s->ev[i].t_phys) set_phys(s, i, &best);
   predict_cell(s, i, axis, -dir);
   schedule(s, i);
